@@ -1,0 +1,22 @@
+# Installs the library, its headers, the templates and a CMake package so that firmware projects
+# can `find_package(libesi)` and link `libesi::esi`.
+include(CMakePackageConfigHelpers)
+
+install(TARGETS esi EXPORT libesiTargets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY libesi/include/esi DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY templates/ DESTINATION ${CMAKE_INSTALL_DATADIR}/libesi/templates)
+install(DIRECTORY schemas/ DESTINATION ${CMAKE_INSTALL_DATADIR}/libesi/schemas)
+install(EXPORT libesiTargets NAMESPACE libesi:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/libesi)
+
+configure_package_config_file(cmake/libesiConfig.cmake.in
+    ${CMAKE_CURRENT_BINARY_DIR}/libesiConfig.cmake
+    INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/libesi)
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/libesiConfigVersion.cmake
+    COMPATIBILITY SameMinorVersion)
+install(FILES
+    ${CMAKE_CURRENT_BINARY_DIR}/libesiConfig.cmake
+    ${CMAKE_CURRENT_BINARY_DIR}/libesiConfigVersion.cmake
+    DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/libesi)

@@ -1,0 +1,11 @@
+# Warning and sanitizer flags for the project's own targets (never applied to third-party code).
+function(esi_project_options target)
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+    if(ESI_WERROR)
+        target_compile_options(${target} PRIVATE -Werror)
+    endif()
+    if(ESI_SANITIZE)
+        target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
+        target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+    endif()
+endfunction()

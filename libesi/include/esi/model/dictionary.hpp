@@ -1,0 +1,131 @@
+#pragma once
+// Profile/Dictionary: data types and objects of the CoE object dictionary.
+
+#include "esi/model/common.hpp"
+#include "esi/number.hpp"
+
+namespace esi {
+
+struct ObjectFlags {
+    std::optional<std::string> access;  // ro, rw, wo
+    std::optional<std::string> access_read_restrictions;
+    std::optional<std::string> access_write_restrictions;
+    std::optional<std::string> category;     // m, o, c
+    std::optional<std::string> pdo_mapping;  // R, T, RT, TR
+    std::optional<std::string> safety_mapping;
+    std::optional<std::uint32_t> attribute;
+    std::optional<std::string> transition;
+    std::optional<std::string> sdo_access;
+    std::optional<std::int32_t> backup;
+    std::optional<std::int32_t> setting;
+    SourcePos pos;
+    Extras extras;
+};
+
+struct ObjectSubItemInfo;
+
+// ObjectInfoType: default and limit values of an object or of one of its sub-items.
+struct ObjectInfo {
+    std::optional<std::string> default_string;
+    std::optional<HexData> min_data;
+    std::optional<HexData> max_data;
+    std::optional<HexData> default_data;
+    std::optional<Number> min_value;
+    std::optional<Number> max_value;
+    std::optional<Number> default_value;
+    std::vector<ObjectSubItemInfo> sub_items;
+    std::optional<std::string> display_name;
+    std::optional<std::uint32_t> unit;
+    SourcePos pos;
+    Extras extras;
+};
+
+// Object/Info/SubItem: values for one sub-entry, matched to the type's SubItem by Name.
+struct ObjectSubItemInfo {
+    std::string name;
+    ObjectInfo info;
+    SourcePos pos;
+    Extras extras;
+};
+
+struct Object {
+    std::uint32_t index = 0;
+    SourcePos index_pos;
+    Names names;
+    Names comments;
+    std::string type;  // a DataType name (basic or defined in DataTypes)
+    SourcePos type_pos;
+    std::uint64_t bit_size = 0;
+    SourcePos bit_size_pos;
+    std::optional<ObjectInfo> info;
+    std::optional<ObjectFlags> flags;
+    SourcePos pos;
+    Extras extras;  // Properties, Xml
+};
+
+struct ArrayInfo {
+    std::int64_t lower_bound = 0;
+    std::int64_t elements = 0;
+    SourcePos pos;
+};
+
+struct DataTypeSubItem {
+    std::optional<std::uint32_t> subindex;  // SubIdx
+    std::string name;
+    Names display_names;
+    std::string type;
+    Names comments;
+    std::uint64_t bit_size = 0;
+    std::uint64_t bit_offset = 0;  // BitOffs
+    std::optional<std::string> default_string;
+    std::optional<HexData> default_data;
+    std::optional<Number> min_value;
+    std::optional<Number> max_value;
+    std::optional<Number> default_value;
+    std::optional<ObjectFlags> flags;
+    SourcePos pos;
+    Extras extras;
+};
+
+struct EnumValue {
+    Names texts;
+    Number value;
+    Names comments;
+    SourcePos pos;
+};
+
+struct DataType {
+    std::optional<std::uint32_t> index;
+    std::string name;
+    SourcePos name_pos;
+    std::optional<std::string> base_type;
+    Names comments;
+    std::uint64_t bit_size = 0;
+    std::vector<ArrayInfo> array_info;
+    std::vector<DataTypeSubItem> sub_items;
+    std::vector<EnumValue> enums;
+    SourcePos pos;
+    Extras extras;  // Properties, Xml
+};
+
+struct Dictionary {
+    std::vector<DataType> data_types;
+    std::vector<Object> objects;
+    SourcePos pos;
+    Extras extras;  // UnitTypes
+
+    [[nodiscard]] const Object* find_object(std::uint32_t index) const;
+    [[nodiscard]] const DataType* find_data_type(std::string_view name) const;
+};
+
+struct Profile {
+    std::optional<std::int32_t> profile_no;
+    std::optional<std::int32_t> add_info;
+    std::optional<std::int32_t> channel;  // @Channel (deprecated, CTT 5-6)
+    std::optional<std::string> dictionary_file;
+    std::optional<Dictionary> dictionary;
+    SourcePos pos;
+    Extras extras;  // ChannelCount, ChannelInfo, DiagFile, DiagMessages, VendorSpecific …
+};
+
+}  // namespace esi

@@ -1,0 +1,59 @@
+#pragma once
+// Numbers as ESI writes them: HexDecValue is decimal or "#x" hex (ETG.2000 schema); "0x" hex is
+// not valid ESI but is accepted with a diagnostic because real files contain it.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace esi {
+
+// A signed 65-bit value: ESI defaults reach 2^64-1 (ULINT) and go down to -2^63 (LINT).
+struct Number {
+    std::uint64_t magnitude = 0;
+    bool negative = false;
+
+    [[nodiscard]] static constexpr Number from_signed(std::int64_t v) {
+        return v < 0 ? Number{static_cast<std::uint64_t>(-(v + 1)) + 1u, true} : Number{static_cast<std::uint64_t>(v), false};
+    }
+    [[nodiscard]] static constexpr Number from_unsigned(std::uint64_t v) { return Number{v, false}; }
+
+    [[nodiscard]] std::optional<std::int64_t> as_int64() const;
+    [[nodiscard]] std::optional<std::uint64_t> as_uint64() const;
+    // Two's-complement bit pattern truncated to 64 bits (what goes on the wire).
+    [[nodiscard]] std::uint64_t bits() const { return negative ? (~magnitude + 1u) : magnitude; }
+    [[nodiscard]] bool fits_signed_bits(unsigned bits) const;
+    [[nodiscard]] bool fits_unsigned_bits(unsigned bits) const;
+
+    friend constexpr bool operator==(const Number& a, const Number& b) {
+        return a.magnitude == b.magnitude && (a.negative == b.negative || a.magnitude == 0);
+    }
+};
+
+enum class NumberSyntax { decimal, hash_hex, c_hex };
+
+enum class NumberError { none, empty, bad_digit, no_digits, overflow };
+
+struct ParsedNumber {
+    Number value;
+    NumberSyntax syntax = NumberSyntax::decimal;
+    NumberError error = NumberError::none;
+    [[nodiscard]] bool ok() const { return error == NumberError::none; }
+};
+
+// Parses after trimming surrounding whitespace. Accepts [+-]decimal, [+-]#xHEX and [+-]0xHEX.
+[[nodiscard]] ParsedNumber parse_number(std::string_view text);
+
+[[nodiscard]] std::string_view to_string(NumberError error);
+
+// ESI spelling of a value: "#x" with at least `min_digits` upper-case hex digits.
+[[nodiscard]] std::string format_hex(std::uint64_t value, int min_digits = 0);
+[[nodiscard]] std::string format_decimal(const Number& value);
+
+// xs:boolean: true/false/1/0 after trimming whitespace.
+[[nodiscard]] std::optional<bool> parse_boolean(std::string_view text);
+
+[[nodiscard]] std::string_view trim(std::string_view text);
+
+}  // namespace esi

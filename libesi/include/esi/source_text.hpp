@@ -1,0 +1,56 @@
+#pragma once
+// A decoded (UTF-8) source file plus an index of its line starts, so that byte offsets
+// from the parser turn into line:column positions and diagnostics can quote the line.
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "esi/source_pos.hpp"
+
+namespace esi {
+
+class SourceText {
+public:
+    SourceText() = default;
+    SourceText(std::string path, std::string utf8);
+
+    [[nodiscard]] const std::string& path() const { return path_; }
+    [[nodiscard]] const std::string& text() const { return text_; }
+    [[nodiscard]] std::string& mutable_text() { return text_; }
+
+    // Line and column (both 1-based; the column counts Unicode code points) of a byte offset.
+    [[nodiscard]] SourcePos position_of(std::size_t offset) const;
+    // Index of the 1-based line holding a byte offset, and the byte offset where a line starts.
+    [[nodiscard]] std::uint32_t line_of(std::size_t offset) const;
+    [[nodiscard]] std::size_t line_start(std::uint32_t line_number) const { return line_starts_[line_number - 1]; }
+    // Code points in [from, to): the column distance between two offsets on one line.
+    [[nodiscard]] std::uint32_t code_points(std::size_t from, std::size_t to) const;
+    // The text of a 1-based line without its line terminator; empty when out of range.
+    [[nodiscard]] std::string_view line(std::uint32_t line_number) const;
+    [[nodiscard]] std::size_t line_count() const { return line_starts_.size(); }
+
+private:
+    std::string path_;
+    std::string text_;
+    std::vector<std::size_t> line_starts_;
+};
+
+using SourceTextPtr = std::shared_ptr<const SourceText>;
+
+// Turns offsets into positions in linear total time when they arrive mostly in increasing
+// order (as a document-order walk produces them); a single-line multi-MB file stays linear.
+class PositionCursor {
+public:
+    explicit PositionCursor(const SourceText& source) : source_(source) {}
+    [[nodiscard]] SourcePos position_of(std::size_t offset);
+
+private:
+    const SourceText& source_;
+    std::size_t last_offset_ = 0;
+    SourcePos last_{1, 1};
+};
+
+}  // namespace esi

@@ -1,0 +1,40 @@
+#pragma once
+// The ESI XML front end: bytes -> typed model + diagnostics. Tolerant of what vendors ship
+// (BOM, UTF-16, ISO-8859-1/Windows-1252, #x and decimal numbers, 0x with a diagnostic,
+// 1/0/true/false, several Names, unknown elements kept verbatim). A file that is not well-formed
+// yields a single xml-syntax error at the position of the fault and no document.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "esi/diagnostic.hpp"
+#include "esi/model/ethercat_info.hpp"
+
+namespace esi {
+
+struct ReadOptions {
+    // Keep the decoded text in the document (for quoting source lines in reports).
+    bool keep_source = true;
+    // Nesting depth beyond which unknown elements are not copied (guards against hostile input).
+    std::size_t max_verbatim_depth = 256;
+};
+
+struct ReadResult {
+    std::optional<EsiDocument> document;  // absent when the file could not be read or parsed
+    Diagnostics diagnostics;
+    // The decoded text; set even when parsing failed, so reports can quote the faulty line.
+    SourceTextPtr source;
+};
+
+// `path` is used in diagnostics; the bytes may come from anywhere (a file, stdin, memory).
+[[nodiscard]] ReadResult read_esi(std::string_view bytes, std::string path, const ReadOptions& options = {});
+
+// Reads a file; a missing or unreadable file gives an `io-error` diagnostic.
+[[nodiscard]] ReadResult read_esi_file(const std::filesystem::path& path, const ReadOptions& options = {});
+
+// Reads a whole file into memory; nullopt and a message when it cannot be read.
+[[nodiscard]] std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error);
+
+}  // namespace esi

@@ -1,0 +1,132 @@
+#include "esi/number.hpp"
+
+#include <limits>
+
+namespace esi {
+
+std::string_view trim(std::string_view text) {
+    auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    while (!text.empty() && is_space(text.front())) text.remove_prefix(1);
+    while (!text.empty() && is_space(text.back())) text.remove_suffix(1);
+    return text;
+}
+
+std::optional<std::int64_t> Number::as_int64() const {
+    constexpr auto max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+    if (!negative) {
+        if (magnitude > max) return std::nullopt;
+        return static_cast<std::int64_t>(magnitude);
+    }
+    if (magnitude > max + 1u) return std::nullopt;
+    if (magnitude == max + 1u) return std::numeric_limits<std::int64_t>::min();
+    return -static_cast<std::int64_t>(magnitude);
+}
+
+std::optional<std::uint64_t> Number::as_uint64() const {
+    if (negative && magnitude != 0) return std::nullopt;
+    return magnitude;
+}
+
+bool Number::fits_signed_bits(unsigned bits) const {
+    if (bits == 0) return false;
+    if (bits >= 64) return as_int64().has_value();
+    const std::uint64_t limit = std::uint64_t{1} << (bits - 1);
+    return negative ? magnitude <= limit : magnitude < limit;
+}
+
+bool Number::fits_unsigned_bits(unsigned bits) const {
+    if (negative && magnitude != 0) return false;
+    if (bits >= 64) return true;
+    return magnitude < (std::uint64_t{1} << bits);
+}
+
+namespace {
+int hex_digit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+}  // namespace
+
+ParsedNumber parse_number(std::string_view text) {
+    ParsedNumber result;
+    text = trim(text);
+    if (text.empty()) {
+        result.error = NumberError::empty;
+        return result;
+    }
+    bool negative = false;
+    if (text.front() == '+' || text.front() == '-') {
+        negative = text.front() == '-';
+        text.remove_prefix(1);
+    }
+    unsigned base = 10;
+    if (text.size() >= 2 && text[0] == '#' && (text[1] == 'x' || text[1] == 'X')) {
+        base = 16;
+        result.syntax = NumberSyntax::hash_hex;
+        text.remove_prefix(2);
+    } else if (text.size() >= 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
+        base = 16;
+        result.syntax = NumberSyntax::c_hex;
+        text.remove_prefix(2);
+    }
+    if (text.empty()) {
+        result.error = NumberError::no_digits;
+        return result;
+    }
+    std::uint64_t value = 0;
+    for (char c : text) {
+        const int digit = base == 16 ? hex_digit(c) : (c >= '0' && c <= '9' ? c - '0' : -1);
+        if (digit < 0) {
+            result.error = NumberError::bad_digit;
+            return result;
+        }
+        if (value > (std::numeric_limits<std::uint64_t>::max() - static_cast<unsigned>(digit)) / base) {
+            result.error = NumberError::overflow;
+            return result;
+        }
+        value = value * base + static_cast<unsigned>(digit);
+    }
+    result.value = Number{value, negative && value != 0};
+    return result;
+}
+
+std::string_view to_string(NumberError error) {
+    switch (error) {
+        case NumberError::none: return "no error";
+        case NumberError::empty: return "empty value";
+        case NumberError::bad_digit: return "not a number";
+        case NumberError::no_digits: return "hex prefix without digits";
+        case NumberError::overflow: return "value does not fit in 64 bits";
+    }
+    return "not a number";
+}
+
+std::string format_hex(std::uint64_t value, int min_digits) {
+    static constexpr char digits[] = "0123456789ABCDEF";
+    char buffer[16];
+    int n = 0;
+    do {
+        buffer[n++] = digits[value & 0xF];
+        value >>= 4;
+    } while (value != 0);
+    std::string out = "#x";
+    for (int i = n; i < min_digits; ++i) out.push_back('0');
+    while (n > 0) out.push_back(buffer[--n]);
+    return out;
+}
+
+std::string format_decimal(const Number& value) {
+    std::string digits = std::to_string(value.magnitude);
+    return value.negative && value.magnitude != 0 ? "-" + digits : digits;
+}
+
+std::optional<bool> parse_boolean(std::string_view text) {
+    text = trim(text);
+    if (text == "true" || text == "1") return true;
+    if (text == "false" || text == "0") return false;
+    return std::nullopt;
+}
+
+}  // namespace esi
