@@ -8,6 +8,7 @@
 #include "esi/model/ethercat_info.hpp"
 #include "esi/model/mailbox.hpp"
 #include "esi/model/module.hpp"
+#include "esi/model/object_layout.hpp"
 #include "esi/model/pdo.hpp"
 #include "esi/model/sync_manager.hpp"
 #include "esi/model/vendor.hpp"

@@ -1061,10 +1061,15 @@ SourcePos raw_position(std::string_view bytes, std::size_t offset) {
     return SourcePos{line, static_cast<std::uint32_t>(offset - line_start + 1)};
 }
 
-// The first element inside an end tag that pugixml reports at the very end of the input:
-// xmllint and editors point at the unclosed element instead; we point at the end of the text.
 SourcePos error_position(const SourceText& source, const pugi::xml_parse_result& result) {
-    const auto offset = static_cast<std::size_t>(result.offset < 0 ? 0 : result.offset);
+    auto offset = static_cast<std::size_t>(result.offset < 0 ? 0 : result.offset);
+    offset = std::min(offset, source.text().size());
+    // A malformed tag is reported where the parser gave up, which may be past the blanks after
+    // it (`</Name ⏎ <`); point at the '<' that opened the broken tag instead, as users look there.
+    if (result.status == pugi::status_bad_end_element || result.status == pugi::status_bad_start_element) {
+        const auto open = source.text().rfind('<', offset > 0 ? offset - 1 : 0);
+        if (open != std::string::npos) offset = open;
+    }
     return source.position_of(offset);
 }
 

@@ -1,0 +1,121 @@
+// esi-lint: checks ESI files against the ETG rules and the vendor's own limits.
+// Exit codes: 0 nothing reaches --fail-on, 1 something does, 2 usage error or unreadable input.
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <iterator>
+#include <unistd.h>
+
+#include "esi/lint/lint.hpp"
+#include "esi/report/lint_output.hpp"
+#include "esi/version.hpp"
+
+namespace {
+
+constexpr int exit_clean = 0;
+constexpr int exit_findings = 1;
+constexpr int exit_usage = 2;
+
+bool reaches(esi::Severity severity, const std::string& fail_on) {
+    if (fail_on == "never") return false;
+    if (fail_on == "info") return true;
+    if (fail_on == "warning") return severity != esi::Severity::info;
+    return severity == esi::Severity::error;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"esi-lint: check EtherCAT ESI files against ETG rules and vendor limits"};
+    std::vector<std::string> paths;
+    std::string format = "text";
+    std::string fail_on = "error";
+    std::string config;
+    std::string xsd;
+    std::string explain;
+    bool list_rules = false;
+    bool no_source = false;
+    bool color = false;
+    unsigned jobs = 0;
+    app.add_option("paths", paths, "ESI files, directories (recursive *.xml) or - for stdin");
+    app.add_option("--format", format, "text, json, sarif or github (with --list-rules: text or json)")
+        ->check(CLI::IsMember({"text", "json", "sarif", "github"}));
+    app.add_option("--fail-on", fail_on, "lowest severity that makes the exit code 1")
+        ->check(CLI::IsMember({"error", "warning", "info", "never"}));
+    app.add_option("--config", config, "config file (default: nearest .esi-lint.yaml upwards from each file)");
+    app.add_option("--xsd", xsd, "also validate against the ETG schema files in this directory");
+    app.add_flag("--list-rules", list_rules, "print the rule catalogue");
+    app.add_option("--explain", explain, "print one rule's rationale with a bad and a good example");
+    app.add_option("-j,--jobs", jobs, "files linted in parallel (default: all cores)");
+    app.add_flag("--no-source", no_source, "text format: do not quote the source line");
+    app.add_flag("--color", color, "text format: colour the output");
+    app.set_version_flag("--version", std::string(esi::version()));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return exit_usage;
+    }
+
+    if (list_rules) {
+        std::cout << (format == "json" ? esi::render_rule_list_json() : esi::render_rule_list_text());
+        return exit_clean;
+    }
+    if (!explain.empty()) {
+        const std::string text = esi::render_rule_explanation(explain);
+        if (text.empty()) {
+            std::cerr << "esi-lint: unknown rule '" << explain << "' (see --list-rules)\n";
+            return exit_usage;
+        }
+        std::cout << text;
+        return exit_clean;
+    }
+    if (paths.empty()) {
+        std::cerr << "esi-lint: no input files (give files, directories or - for stdin; --help for usage)\n";
+        return exit_usage;
+    }
+
+    esi::LintOptions options;
+    if (!config.empty()) options.config_path = config;
+    if (!xsd.empty()) options.xsd_dir = xsd;
+    options.jobs = jobs;
+
+    esi::LintReport report;
+    std::vector<std::filesystem::path> files;
+    bool use_stdin = false;
+    for (const auto& p : paths) {
+        if (p == "-") use_stdin = true;
+        else files.emplace_back(p);
+    }
+    if (!files.empty()) report = esi::lint_paths(files, options);
+    if (use_stdin) {
+        const std::string bytes{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+        std::optional<std::filesystem::path> config_path = options.config_path;
+        if (!config_path) config_path = esi::find_config_for(std::filesystem::current_path() / "stdin.xml");
+        esi::EffectiveConfig effective;
+        if (config_path) {
+            esi::ConfigResult loaded = esi::load_lint_config(*config_path);
+            report.config_diagnostics.append(std::move(loaded.diagnostics));
+            if (loaded.config) effective = esi::effective_config(*loaded.config, "stdin.xml");
+        }
+        report.files.push_back(esi::lint_bytes(bytes, "<stdin>", effective, options.xsd_dir));
+    }
+
+    std::string output;
+    if (format == "json") output = esi::render_json(report);
+    else if (format == "sarif") output = esi::render_sarif(report, esi::version());
+    else if (format == "github") output = esi::render_github(report);
+    else output = esi::render_text(report, {.show_source = !no_source, .color = color && isatty(STDOUT_FILENO)});
+    std::fwrite(output.data(), 1, output.size(), stdout);
+    std::fflush(stdout);
+
+    if (report.any_unreadable() || report.config_diagnostics.has_errors()) return exit_usage;
+    for (const auto& file : report.files)
+        for (const auto& d : file.diagnostics)
+            if (reaches(d.severity, fail_on)) return exit_findings;
+    return exit_clean;
+}

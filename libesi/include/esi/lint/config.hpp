@@ -1,0 +1,58 @@
+#pragma once
+// .esi-lint.yaml: which rules run at which severity, the vendor's own limits, per-file overrides.
+//
+//   extends: [profiles/servo.yaml]      # relative to this file; later entries win
+//   rules: { sm-size-zero: off, pdo-entry-bitlen: error }
+//   limits: { max_pdos: {rx: 4, tx: 4}, max_entries_per_pdo: 6, bitlen: [8, 16, 32] }
+//   overrides:
+//     - files: ["legacy/*.xml"]          # globs against the path relative to this file
+//       product_codes: [0x264860d2]      # optional: limits apply to these devices only
+//       rules: { … }
+//       limits: { … }
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "esi/check/effective_config.hpp"
+#include "esi/diagnostic.hpp"
+
+namespace esi {
+
+struct ConfigOverride {
+    std::vector<std::string> files;  // globs; empty: every file
+    std::vector<std::uint32_t> product_codes;
+    std::map<std::string, RuleSetting, std::less<>> rules;
+    Limits limits;
+};
+
+struct LintConfig {
+    std::filesystem::path path;  // where it was read from; empty for the built-in default
+    std::map<std::string, RuleSetting, std::less<>> rules;
+    Limits limits;
+    std::vector<ConfigOverride> overrides;
+};
+
+struct ConfigResult {
+    std::optional<LintConfig> config;
+    Diagnostics diagnostics;  // with the config file's path and positions
+};
+
+// Reads a config file (and what it extends). Errors are diagnostics; unknown keys and rule ids
+// get a did-you-mean.
+[[nodiscard]] ConfigResult load_lint_config(const std::filesystem::path& path);
+
+// Parses a `limits:` mapping (shared with the YAML device source). Reports into `diagnostics`
+// against `path`.
+[[nodiscard]] Limits parse_limits(const YAML::Node& node, const std::string& path, Diagnostics& diagnostics);
+
+// The nearest .esi-lint.yaml in the file's directory or above; nullopt when there is none.
+[[nodiscard]] std::optional<std::filesystem::path> find_config_for(const std::filesystem::path& file);
+
+[[nodiscard]] EffectiveConfig effective_config(const LintConfig& config, const std::filesystem::path& file);
+
+}  // namespace esi

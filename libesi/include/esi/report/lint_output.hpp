@@ -1,0 +1,28 @@
+#pragma once
+// Renders a lint report as text (file:line:col: severity: message [rule] with the source line),
+// JSON, SARIF 2.1.0 or GitHub workflow annotations. Pure functions: the CLI prints the string.
+
+#include <string>
+
+#include "esi/lint/lint.hpp"
+
+namespace esi {
+
+struct TextOutputOptions {
+    bool show_source = true;  // quote the offending line with a caret
+    bool color = false;
+};
+
+[[nodiscard]] std::string render_text(const LintReport& report, const TextOutputOptions& options = {});
+// {"diagnostics":[{path,line,column,severity,rule,message,notes?}],"summary":{files,errors,warnings,infos}}
+[[nodiscard]] std::string render_json(const LintReport& report);
+[[nodiscard]] std::string render_sarif(const LintReport& report, std::string_view tool_version);
+[[nodiscard]] std::string render_github(const LintReport& report);
+
+// The rule catalogue: text (id, severity, summary) or JSON (every field).
+[[nodiscard]] std::string render_rule_list_text();
+[[nodiscard]] std::string render_rule_list_json();
+// One rule in full: rationale, bad and good example. Empty when the id is unknown.
+[[nodiscard]] std::string render_rule_explanation(std::string_view rule_id);
+
+}  // namespace esi

@@ -1,0 +1,45 @@
+#include "esi/check/registry.hpp"
+
+#include <algorithm>
+
+#include "check/areas.hpp"
+
+namespace esi {
+
+namespace {
+std::vector<Rule> build_catalogue() {
+    std::vector<Rule> rules;
+    rules::add_xml(rules);
+    rules::add_identity(rules);
+    rules::add_sm(rules);
+    rules::add_fmmu(rules);
+    rules::add_pdo(rules);
+    rules::add_od(rules);
+    rules::add_mailbox(rules);
+    rules::add_initcmd(rules);
+    rules::add_dc(rules);
+    rules::add_eeprom(rules);
+    rules::add_deprecated(rules);
+    rules::add_profile(rules);
+    std::sort(rules.begin(), rules.end(), [](const Rule& a, const Rule& b) { return a.id < b.id; });
+    return rules;
+}
+}  // namespace
+
+std::span<const Rule> all_rules() {
+    static const std::vector<Rule> catalogue = build_catalogue();
+    return catalogue;
+}
+
+const Rule* find_rule(std::string_view id) {
+    const auto rules = all_rules();
+    const auto it = std::lower_bound(rules.begin(), rules.end(), id, [](const Rule& r, std::string_view key) { return r.id < key; });
+    return it != rules.end() && it->id == id ? &*it : nullptr;
+}
+
+void RuleContext::report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes) {
+    Diagnostic& d = sink_.emplace(severity_, std::string(rule_.id), std::move(message), document_.path, pos);
+    d.notes = std::move(notes);
+}
+
+}  // namespace esi

@@ -1,0 +1,179 @@
+#include "esi/lint/lint.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include "esi/lint/suppression.hpp"
+#include "esi/lint/xsd.hpp"
+
+namespace esi {
+
+std::size_t LintReport::count(Severity severity) const {
+    std::size_t n = config_diagnostics.count(severity);
+    for (const auto& f : files) n += f.diagnostics.count(severity);
+    return n;
+}
+
+bool LintReport::any_unreadable() const {
+    return std::any_of(files.begin(), files.end(), [](const FileReport& f) { return f.unreadable; });
+}
+
+Diagnostics run_rules(const EsiDocument& document, const EffectiveConfig& config) {
+    Diagnostics out;
+    for (const Rule& rule : all_rules()) {
+        if (!rule.check) continue;
+        const std::optional<Severity> severity = config.severity_of(rule.id, rule.default_severity);
+        if (!severity) continue;
+        RuleContext context(document, rule, *severity, config, out);
+        rule.check(document, context);
+    }
+    return out;
+}
+
+namespace {
+
+// Applies the config to diagnostics that did not come from a rule's check (reader, schema).
+void apply_settings(Diagnostics& diagnostics, const EffectiveConfig& config) {
+    auto& items = diagnostics.items();
+    std::vector<Diagnostic> kept;
+    kept.reserve(items.size());
+    for (auto& d : items) {
+        const Rule* rule = find_rule(d.rule);
+        if (!rule) {
+            kept.push_back(std::move(d));
+            continue;
+        }
+        // xml-syntax and encoding faults stay errors: there is no trustworthy document behind them.
+        if (d.rule == "xml-syntax") {
+            kept.push_back(std::move(d));
+            continue;
+        }
+        const std::optional<Severity> severity = config.severity_of(d.rule, d.severity);
+        if (!severity) continue;
+        d.severity = *severity;
+        kept.push_back(std::move(d));
+    }
+    items = std::move(kept);
+}
+
+FileReport lint_read_result(ReadResult read, const std::string& path, const EffectiveConfig& config, const SchemaSet* schemas) {
+    FileReport report;
+    report.path = path;
+    report.source = read.source;
+    Diagnostics diagnostics = std::move(read.diagnostics);
+    for (const auto& d : diagnostics)
+        if (d.rule == "io-error") report.unreadable = true;
+    if (read.document) diagnostics.append(run_rules(*read.document, config));
+    if (schemas && read.source && read.document) diagnostics.append(schemas->validate(*read.source));
+    apply_settings(diagnostics, config);
+    if (read.source) {
+        const Suppressions suppressions = find_suppressions(*read.source, diagnostics);
+        auto& items = diagnostics.items();
+        items.erase(std::remove_if(items.begin(), items.end(), [&](const Diagnostic& d) { return suppressions.suppresses(d); }),
+                    items.end());
+    }
+    diagnostics.sort();
+    report.diagnostics = std::move(diagnostics);
+    return report;
+}
+
+void collect_xml_files(const std::filesystem::path& dir, std::vector<std::filesystem::path>& out) {
+    std::vector<std::filesystem::path> found;
+    std::error_code ec;
+    for (auto it = std::filesystem::recursive_directory_iterator(dir, std::filesystem::directory_options::skip_permission_denied, ec);
+         it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+        if (ec) break;
+        const auto& entry = *it;
+        std::string extension = entry.path().extension().string();
+        std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+        if (extension == ".xml" && entry.is_regular_file(ec)) found.push_back(entry.path());
+    }
+    std::sort(found.begin(), found.end());
+    out.insert(out.end(), found.begin(), found.end());
+}
+
+}  // namespace
+
+FileReport lint_bytes(std::string_view bytes, const std::string& path, const EffectiveConfig& config,
+                      const std::optional<std::filesystem::path>& xsd_dir) {
+    std::shared_ptr<SchemaSet> schemas;
+    Diagnostics schema_diagnostics;
+    if (xsd_dir) schemas = SchemaSet::load(*xsd_dir, schema_diagnostics);
+    FileReport report = lint_read_result(read_esi(bytes, path), path, config, schemas.get());
+    report.diagnostics.append(std::move(schema_diagnostics));
+    report.diagnostics.sort();
+    return report;
+}
+
+std::vector<std::filesystem::path> expand_inputs(const std::vector<std::filesystem::path>& inputs, Diagnostics& diagnostics) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& input : inputs) {
+        std::error_code ec;
+        if (std::filesystem::is_directory(input, ec)) collect_xml_files(input, files);
+        else if (std::filesystem::exists(input, ec)) files.push_back(input);
+        else diagnostics.emplace(Severity::error, "io-error", "no such file or directory", input.string(), {});
+    }
+    return files;
+}
+
+LintReport lint_paths(const std::vector<std::filesystem::path>& inputs, const LintOptions& options) {
+    LintReport report;
+    Diagnostics missing;
+    const std::vector<std::filesystem::path> files = expand_inputs(inputs, missing);
+    for (auto& d : missing) {
+        FileReport unreadable;
+        unreadable.path = d.path;
+        unreadable.unreadable = true;
+        unreadable.diagnostics.add(d);
+        report.files.push_back(std::move(unreadable));
+    }
+
+    std::shared_ptr<SchemaSet> schemas;
+    if (options.xsd_dir) schemas = SchemaSet::load(*options.xsd_dir, report.config_diagnostics);
+
+    // Configs: either the one given, or the nearest .esi-lint.yaml of each file (loaded once).
+    std::map<std::string, std::optional<LintConfig>> loaded;
+    auto load = [&](const std::filesystem::path& config_path) -> const std::optional<LintConfig>& {
+        const std::string key = config_path.string();
+        auto it = loaded.find(key);
+        if (it != loaded.end()) return it->second;
+        ConfigResult result = load_lint_config(config_path);
+        report.config_diagnostics.append(std::move(result.diagnostics));
+        return loaded.emplace(key, std::move(result.config)).first->second;
+    };
+    static const LintConfig default_config{};
+    std::vector<EffectiveConfig> configs(files.size());
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        std::optional<std::filesystem::path> config_path = options.config_path;
+        if (!config_path) config_path = find_config_for(files[i]);
+        const LintConfig* config = &default_config;
+        if (config_path) {
+            if (const auto& c = load(*config_path)) config = &*c;
+        }
+        configs[i] = effective_config(*config, files[i]);
+    }
+
+    std::vector<FileReport> results(files.size());
+    unsigned jobs = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
+    jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(files.size(), 1)));
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+        for (std::size_t i = next++; i < files.size(); i = next++)
+            results[i] = lint_read_result(read_esi_file(files[i]), files[i].string(), configs[i], schemas.get());
+    };
+    if (jobs <= 1) {
+        worker();
+    } else {
+        std::vector<std::thread> threads;
+        for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker);
+        for (auto& t : threads) t.join();
+    }
+    for (auto& r : results) report.files.push_back(std::move(r));
+    report.config_diagnostics.sort();
+    return report;
+}
+
+}  // namespace esi

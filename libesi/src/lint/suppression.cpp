@@ -1,0 +1,82 @@
+#include "esi/lint/suppression.hpp"
+
+#include <limits>
+
+#include "esi/check/registry.hpp"
+#include "esi/number.hpp"
+
+namespace esi {
+
+namespace {
+constexpr std::uint32_t to_end = std::numeric_limits<std::uint32_t>::max();
+
+std::vector<std::string> split_rules(std::string_view list) {
+    std::vector<std::string> out;
+    while (!list.empty()) {
+        const auto comma = list.find(',');
+        const std::string_view item = trim(list.substr(0, comma));
+        if (!item.empty()) out.emplace_back(item);
+        if (comma == std::string_view::npos) break;
+        list.remove_prefix(comma + 1);
+    }
+    return out;
+}
+}  // namespace
+
+bool Suppressions::suppresses(const Diagnostic& diagnostic) const {
+    if (diagnostic.rule == "xml-syntax") return false;
+    for (const auto& r : regions) {
+        if (r.rule != "all" && r.rule != diagnostic.rule) continue;
+        if (diagnostic.pos.line >= r.first_line && diagnostic.pos.line <= r.last_line) return true;
+    }
+    return false;
+}
+
+Suppressions find_suppressions(const SourceText& source, Diagnostics& diagnostics) {
+    Suppressions out;
+    const std::string& text = source.text();
+    constexpr std::string_view marker = "esi-lint:";
+    std::size_t at = 0;
+    while ((at = text.find(marker, at)) != std::string::npos) {
+        // Only inside a comment: the nearest "<!--" before must be after the nearest "-->".
+        const auto open = text.rfind("<!--", at);
+        const auto close_before = text.rfind("-->", at);
+        const auto close = text.find("-->", at);
+        if (open == std::string::npos || (close_before != std::string::npos && close_before > open) || close == std::string::npos) {
+            at += marker.size();
+            continue;
+        }
+        const SourcePos pos = source.position_of(open);
+        std::string_view body = trim(std::string_view(text).substr(at + marker.size(), close - at - marker.size()));
+        at = close;
+        const auto eq = body.find('=');
+        const std::string_view verb = trim(body.substr(0, eq));
+        if (eq == std::string_view::npos || (verb != "disable" && verb != "enable" && verb != "disable-next-line")) {
+            diagnostics.emplace(Severity::warning, "lint-directive",
+                                "unknown esi-lint directive '" + std::string(body) +
+                                    "' (expected disable=, enable= or disable-next-line=)",
+                                source.path(), pos);
+            continue;
+        }
+        const std::uint32_t end_line = source.position_of(close).line;
+        for (const std::string& rule : split_rules(body.substr(eq + 1))) {
+            if (rule != "all" && !find_rule(rule)) {
+                diagnostics.emplace(Severity::warning, "lint-directive", "esi-lint directive names unknown rule '" + rule + "'",
+                                    source.path(), pos);
+                continue;
+            }
+            if (verb == "disable") {
+                out.regions.push_back({rule, pos.line, to_end});
+            } else if (verb == "disable-next-line") {
+                out.regions.push_back({rule, end_line + 1, end_line + 1});
+            } else {
+                // enable: close the open regions of this rule.
+                for (auto& r : out.regions)
+                    if (r.rule == rule && r.last_line == to_end) r.last_line = pos.line;
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace esi

@@ -1,0 +1,207 @@
+#include "esi/model/object_layout.hpp"
+
+#include <cstdio>
+
+namespace esi {
+
+namespace {
+constexpr int max_type_depth = 16;
+}
+
+std::string_view to_string(ObjectCode code) {
+    switch (code) {
+        case ObjectCode::var: return "VAR";
+        case ObjectCode::array: return "ARRAY";
+        case ObjectCode::record: return "RECORD";
+    }
+    return "VAR";
+}
+
+ResolvedType resolve_type(const Dictionary* dictionary, std::string_view type_name) {
+    ResolvedType out;
+    std::string current(trim(type_name));
+    for (int depth = 0; depth < max_type_depth; ++depth) {
+        const DataType* definition = dictionary ? dictionary->find_data_type(current) : nullptr;
+        if (definition) {
+            out.known = true;
+            if (!out.definition) {
+                out.definition = definition;
+                out.bit_size = definition->bit_size;
+                out.is_structure = !definition->sub_items.empty();
+                if (!definition->array_info.empty()) {
+                    out.is_array = true;
+                    out.array_lower_bound = definition->array_info.front().lower_bound;
+                    out.array_elements = definition->array_info.front().elements > 0
+                                             ? static_cast<std::uint64_t>(definition->array_info.front().elements)
+                                             : 0;
+                    out.element_type = definition->base_type.value_or("");
+                }
+            }
+            if (definition->base_type && !definition->base_type->empty() && *definition->base_type != current) {
+                if (out.is_array && depth == 0) {
+                    // The base type of an array definition is its element type; the array itself ends here.
+                    out.basic = nullptr;
+                    const ResolvedType element = resolve_type(dictionary, *definition->base_type);
+                    if (element.cycle) out.cycle = true;
+                    return out;
+                }
+                current = *definition->base_type;
+                continue;
+            }
+            // A DataType named like a basic type (Beckhoff lists "UINT" with its BitSize).
+            const TypeName parsed = parse_type_name(current);
+            if (parsed.kind == TypeName::Kind::basic) out.basic = parsed.basic;
+            else if (parsed.kind == TypeName::Kind::string) out.basic = parsed.basic;
+            else if (parsed.kind == TypeName::Kind::array && !out.is_array) {
+                out.is_array = true;
+                out.array_lower_bound = parsed.lower_bound;
+                out.array_elements = parsed.element_count();
+                out.element_type = parsed.element;
+            }
+            return out;
+        }
+        const TypeName parsed = parse_type_name(current);
+        switch (parsed.kind) {
+            case TypeName::Kind::basic:
+            case TypeName::Kind::string:
+                out.known = true;
+                out.basic = parsed.basic;
+                if (!out.definition) out.bit_size = implied_bit_size(current).value_or(0);
+                return out;
+            case TypeName::Kind::array:
+                out.known = true;
+                if (!out.definition) {
+                    out.is_array = true;
+                    out.array_lower_bound = parsed.lower_bound;
+                    out.array_elements = parsed.element_count();
+                    out.element_type = parsed.element;
+                    out.bit_size = implied_bit_size(current).value_or(0);
+                }
+                return out;
+            case TypeName::Kind::named: return out;
+        }
+    }
+    out.cycle = true;
+    return out;
+}
+
+const ObjectEntry* ObjectLayout::entry(std::uint32_t subindex) const {
+    for (const auto& e : entries)
+        if (e.subindex == subindex) return &e;
+    return nullptr;
+}
+
+namespace {
+
+std::string subindex_name(std::uint32_t subindex) {
+    char buffer[24];
+    std::snprintf(buffer, sizeof buffer, "SubIndex %03u", subindex);
+    return buffer;
+}
+
+// Adds the elements of an array-typed item starting at `offset`.
+void add_array_elements(const Dictionary* dictionary, const ResolvedType& array, const DataTypeSubItem* item,
+                        std::uint64_t offset, const ObjectFlags* flags, ObjectLayout& layout) {
+    const ResolvedType element = resolve_type(dictionary, array.element_type);
+    std::uint64_t element_bits = element.bit_size;
+    if (element_bits == 0 && array.array_elements > 0) element_bits = array.bit_size / array.array_elements;
+    // Guard against absurd element counts in hostile files: a CoE object has at most 255 sub-indices.
+    const std::uint64_t count = std::min<std::uint64_t>(array.array_elements, 255);
+    const std::int64_t first = array.array_lower_bound > 0 ? array.array_lower_bound : 1;
+    for (std::uint64_t i = 0; i < count; ++i) {
+        ObjectEntry e;
+        const std::int64_t sub = first + static_cast<std::int64_t>(i);
+        if (sub > 255) break;
+        e.subindex = static_cast<std::uint32_t>(sub);
+        e.name = subindex_name(e.subindex);
+        e.type = array.element_type;
+        e.basic = element.basic;
+        e.bit_size = element_bits;
+        e.bit_offset = offset + i * element_bits;
+        e.flags = flags;
+        e.type_item = item;
+        layout.entries.push_back(std::move(e));
+    }
+}
+
+}  // namespace
+
+ObjectLayout layout_of(const Dictionary* dictionary, const Object& object) {
+    ObjectLayout layout;
+    const ObjectFlags* object_flags = object.flags ? &*object.flags : nullptr;
+    const ResolvedType type = resolve_type(dictionary, object.type);
+
+    if (type.is_structure && type.definition) {
+        bool has_array_item = false;
+        std::uint32_t next_subindex = 0;
+        for (const auto& item : type.definition->sub_items) {
+            const ResolvedType item_type = resolve_type(dictionary, item.type);
+            const ObjectFlags* flags = item.flags ? &*item.flags : object_flags;
+            if (item_type.is_array && !item.subindex) {
+                has_array_item = true;
+                const std::size_t before = layout.entries.size();
+                add_array_elements(dictionary, item_type, &item, item.bit_offset, flags, layout);
+                if (layout.entries.size() > before) next_subindex = layout.entries.back().subindex + 1;
+                continue;
+            }
+            ObjectEntry e;
+            e.subindex = item.subindex.value_or(next_subindex);
+            next_subindex = e.subindex + 1;
+            e.name = item.name;
+            e.type = item.type;
+            e.basic = item_type.basic;
+            e.bit_size = item.bit_size;
+            e.bit_offset = item.bit_offset;
+            e.flags = flags;
+            e.type_item = &item;
+            layout.entries.push_back(std::move(e));
+        }
+        layout.code = has_array_item ? ObjectCode::array : ObjectCode::record;
+    } else if (type.is_array) {
+        // An object typed directly as an array: sub-index 0 holds the element count.
+        layout.code = ObjectCode::array;
+        ObjectEntry count;
+        count.subindex = 0;
+        count.name = subindex_name(0);
+        count.type = "USINT";
+        count.basic = find_basic_type("USINT");
+        count.bit_size = 8;
+        count.flags = object_flags;
+        layout.entries.push_back(std::move(count));
+        add_array_elements(dictionary, type, nullptr, 16, object_flags, layout);
+    } else {
+        ObjectEntry e;
+        e.subindex = 0;
+        e.name = primary_text(object.names);
+        e.type = object.type;
+        e.basic = type.basic;
+        e.bit_size = object.bit_size;
+        e.flags = object_flags;
+        e.info = object.info ? &*object.info : nullptr;
+        layout.entries.push_back(std::move(e));
+        return layout;
+    }
+
+    // Object/Info/SubItem lists the values of the sub-entries in order; names confirm the match.
+    if (object.info) {
+        const auto& values = object.info->sub_items;
+        for (std::size_t k = 0; k < layout.entries.size(); ++k) {
+            const ObjectSubItemInfo* match = nullptr;
+            if (k < values.size() && (values[k].name == layout.entries[k].name || values[k].name.empty() ||
+                                      layout.entries[k].type_item == nullptr || values.size() == layout.entries.size()))
+                match = &values[k];
+            if (!match) {
+                for (const auto& v : values)
+                    if (v.name == layout.entries[k].name) match = &v;
+            }
+            if (match) {
+                layout.entries[k].info = &match->info;
+                if (!match->name.empty() && layout.entries[k].type_item && layout.entries[k].type_item->subindex == std::nullopt)
+                    layout.entries[k].name = match->name;  // array elements take the object's names
+            }
+        }
+    }
+    return layout;
+}
+
+}  // namespace esi

@@ -1,0 +1,231 @@
+#include "esi/report/lint_output.hpp"
+
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include "esi/check/registry.hpp"
+
+namespace esi {
+
+namespace {
+
+using ordered_json = nlohmann::ordered_json;
+
+// Every diagnostic of the report in output order: config problems first, then each file's.
+template <class F>
+void for_each_diagnostic(const LintReport& report, F&& f) {
+    for (const auto& d : report.config_diagnostics) f(d, static_cast<const SourceText*>(nullptr));
+    for (const auto& file : report.files)
+        for (const auto& d : file.diagnostics) f(d, file.source.get());
+}
+
+std::string location(const std::string& path, SourcePos pos) {
+    if (!pos.known()) return path;
+    return fmt::format("{}:{}:{}", path, pos.line, pos.column);
+}
+
+// The caret line under a quoted source line: keep tabs so the caret lines up.
+std::string caret_line(std::string_view line, std::uint32_t column) {
+    std::string out;
+    std::uint32_t code_point = 1;
+    for (std::size_t i = 0; i < line.size() && code_point < column; ++i) {
+        const auto c = static_cast<unsigned char>(line[i]);
+        if ((c & 0xC0) == 0x80) continue;
+        out.push_back(c == '\t' ? '\t' : ' ');
+        ++code_point;
+    }
+    out.push_back('^');
+    return out;
+}
+
+std::string summary_line(const LintReport& report) {
+    const std::size_t errors = report.count(Severity::error);
+    const std::size_t warnings = report.count(Severity::warning);
+    const std::size_t infos = report.count(Severity::info);
+    auto plural = [](std::size_t n, std::string_view word) { return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s"); };
+    return fmt::format("{}, {}, {} in {}\n", plural(errors, "error"), plural(warnings, "warning"), plural(infos, "info"),
+                       plural(report.files.size(), "file"));
+}
+
+std::string_view sarif_level(Severity s) {
+    switch (s) {
+        case Severity::error: return "error";
+        case Severity::warning: return "warning";
+        case Severity::info: return "note";
+    }
+    return "warning";
+}
+
+// A relative or absolute path as a URI reference (RFC 3986): percent-encode what is not unreserved.
+std::string to_uri(const std::string& path) {
+    std::string out;
+    for (unsigned char c : path) {
+        if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') out.push_back(static_cast<char>(c));
+        else out += fmt::format("%{:02X}", c);
+    }
+    return out;
+}
+
+std::string github_escape_data(std::string_view s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '%') out += "%25";
+        else if (c == '\r') out += "%0D";
+        else if (c == '\n') out += "%0A";
+        else out.push_back(c);
+    }
+    return out;
+}
+
+std::string github_escape_property(std::string_view s) {
+    std::string out;
+    for (char c : github_escape_data(s)) {
+        if (c == ':') out += "%3A";
+        else if (c == ',') out += "%2C";
+        else out.push_back(c);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string render_text(const LintReport& report, const TextOutputOptions& options) {
+    std::string out;
+    const char* bold = options.color ? "\x1b[1m" : "";
+    const char* reset = options.color ? "\x1b[0m" : "";
+    auto color_of = [&](Severity s) -> const char* {
+        if (!options.color) return "";
+        return s == Severity::error ? "\x1b[1;31m" : s == Severity::warning ? "\x1b[1;35m" : "\x1b[1;36m";
+    };
+    for_each_diagnostic(report, [&](const Diagnostic& d, const SourceText* source) {
+        out += fmt::format("{}{}{}: {}{}{}: {} [{}]\n", bold, location(d.path, d.pos), reset, color_of(d.severity),
+                           to_string(d.severity), reset, d.message, d.rule);
+        if (options.show_source && source && d.pos.known()) {
+            const std::string_view line = source->line(d.pos.line);
+            if (!line.empty()) {
+                out += fmt::format("{:>6} | {}\n", d.pos.line, line);
+                out += fmt::format("{:>6} | {}\n", "", caret_line(line, d.pos.column));
+            }
+        }
+        for (const auto& note : d.notes) out += fmt::format("{}: note: {}\n", location(note.path, note.pos), note.message);
+    });
+    out += summary_line(report);
+    return out;
+}
+
+std::string render_json(const LintReport& report) {
+    ordered_json diagnostics = ordered_json::array();
+    for_each_diagnostic(report, [&](const Diagnostic& d, const SourceText*) {
+        ordered_json item{{"path", d.path},
+                          {"line", d.pos.line},
+                          {"column", d.pos.column},
+                          {"severity", to_string(d.severity)},
+                          {"rule", d.rule},
+                          {"message", d.message}};
+        if (!d.notes.empty()) {
+            ordered_json notes = ordered_json::array();
+            for (const auto& n : d.notes)
+                notes.push_back({{"path", n.path}, {"line", n.pos.line}, {"column", n.pos.column}, {"message", n.message}});
+            item["notes"] = std::move(notes);
+        }
+        diagnostics.push_back(std::move(item));
+    });
+    ordered_json root{{"diagnostics", std::move(diagnostics)},
+                      {"summary",
+                       {{"files", report.files.size()},
+                        {"errors", report.count(Severity::error)},
+                        {"warnings", report.count(Severity::warning)},
+                        {"infos", report.count(Severity::info)}}}};
+    return root.dump(2, ' ', false, nlohmann::detail::error_handler_t::replace) + "\n";
+}
+
+std::string render_sarif(const LintReport& report, std::string_view tool_version) {
+    ordered_json rules = ordered_json::array();
+    std::map<std::string, std::size_t, std::less<>> rule_index;
+    for (const Rule& r : all_rules()) {
+        rule_index.emplace(std::string(r.id), rules.size());
+        rules.push_back({{"id", r.id},
+                         {"shortDescription", {{"text", r.summary}}},
+                         {"fullDescription", {{"text", r.rationale}}},
+                         {"defaultConfiguration", {{"level", sarif_level(r.default_severity)}}},
+                         {"help", {{"text", fmt::format("{}\n\nBad:\n{}\n\nGood:\n{}", r.rationale, r.bad_example, r.good_example)}}}});
+    }
+    ordered_json results = ordered_json::array();
+    for_each_diagnostic(report, [&](const Diagnostic& d, const SourceText*) {
+        ordered_json physical{{"artifactLocation", {{"uri", to_uri(d.path)}}}};
+        if (d.pos.known()) {
+            physical["region"] = {{"startLine", d.pos.line}, {"startColumn", std::max<std::uint32_t>(d.pos.column, 1)}};
+        }
+        ordered_json result{{"ruleId", d.rule}};
+        if (auto it = rule_index.find(d.rule); it != rule_index.end()) result["ruleIndex"] = it->second;
+        result["level"] = sarif_level(d.severity);
+        result["message"] = {{"text", d.message}};
+        result["locations"] = ordered_json::array({{{"physicalLocation", std::move(physical)}}});
+        if (!d.notes.empty()) {
+            ordered_json related = ordered_json::array();
+            int id = 0;
+            for (const auto& n : d.notes) {
+                ordered_json loc{{"artifactLocation", {{"uri", to_uri(n.path)}}}};
+                if (n.pos.known()) loc["region"] = {{"startLine", n.pos.line}, {"startColumn", std::max<std::uint32_t>(n.pos.column, 1)}};
+                related.push_back({{"id", id++}, {"physicalLocation", std::move(loc)}, {"message", {{"text", n.message}}}});
+            }
+            result["relatedLocations"] = std::move(related);
+        }
+        results.push_back(std::move(result));
+    });
+    ordered_json root{
+        {"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
+        {"version", "2.1.0"},
+        {"runs", ordered_json::array({{{"tool",
+                                        {{"driver",
+                                          {{"name", "esi-lint"},
+                                           {"version", tool_version},
+                                           {"informationUri", "https://github.com/libesi/libesi"},
+                                           {"rules", std::move(rules)}}}}},
+                                       {"columnKind", "unicodeCodePoints"},
+                                       {"results", std::move(results)}}})}};
+    return root.dump(2, ' ', false, nlohmann::detail::error_handler_t::replace) + "\n";
+}
+
+std::string render_github(const LintReport& report) {
+    std::string out;
+    for_each_diagnostic(report, [&](const Diagnostic& d, const SourceText*) {
+        const std::string_view command = d.severity == Severity::error ? "error" : d.severity == Severity::warning ? "warning" : "notice";
+        std::string properties = "file=" + github_escape_property(d.path);
+        if (d.pos.known()) properties += fmt::format(",line={},col={}", d.pos.line, d.pos.column);
+        properties += ",title=" + github_escape_property(d.rule);
+        out += fmt::format("::{} {}::{}\n", command, properties, github_escape_data(d.message));
+    });
+    return out;
+}
+
+std::string render_rule_list_text() {
+    std::string out;
+    std::size_t width = 0;
+    for (const Rule& r : all_rules()) width = std::max(width, r.id.size());
+    for (const Rule& r : all_rules())
+        out += fmt::format("{:<{}}  {:<7}  {}\n", r.id, width, to_string(r.default_severity), r.summary);
+    return out;
+}
+
+std::string render_rule_list_json() {
+    ordered_json rules = ordered_json::array();
+    for (const Rule& r : all_rules())
+        rules.push_back({{"id", r.id},
+                         {"severity", to_string(r.default_severity)},
+                         {"summary", r.summary},
+                         {"rationale", r.rationale},
+                         {"bad_example", r.bad_example},
+                         {"good_example", r.good_example}});
+    return ordered_json{{"rules", std::move(rules)}}.dump(2) + "\n";
+}
+
+std::string render_rule_explanation(std::string_view rule_id) {
+    const Rule* r = find_rule(rule_id);
+    if (!r) return {};
+    return fmt::format("{} ({})\n{}\n\n{}\n\nBad:\n  {}\n\nGood:\n  {}\n", r->id, to_string(r->default_severity), r->summary,
+                       r->rationale, r->bad_example, r->good_example);
+}
+
+}  // namespace esi

@@ -1,0 +1,113 @@
+// Every rule with a check has a fixture folder tests/rules/fixtures/<rule-id>/ holding
+//   bad.xml   - the rule must fire exactly on the lines marked <!-- expect: <rule-id> -->
+//   good.xml  - the rule must stay silent
+//   config.yaml (optional) - an .esi-lint.yaml applied to both (for profile-* rules)
+// This test enumerates the catalogue, so a new rule without fixtures fails here.
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <sstream>
+
+#include "esi/check/registry.hpp"
+#include "esi/lint/lint.hpp"
+#include "support/test_support.hpp"
+
+namespace {
+
+using esi::test::read_text;
+
+std::filesystem::path fixture_dir(std::string_view id) {
+    return esi::test::source_dir() / "tests" / "rules" / "fixtures" / std::string(id);
+}
+
+esi::EffectiveConfig config_for(const std::filesystem::path& dir, const std::filesystem::path& file) {
+    const auto config_path = dir / "config.yaml";
+    if (!std::filesystem::exists(config_path)) return {};
+    esi::ConfigResult loaded = esi::load_lint_config(config_path);
+    EXPECT_TRUE(loaded.config) << "fixture config does not load: " << config_path;
+    if (!loaded.config) return {};
+    return esi::effective_config(*loaded.config, file);
+}
+
+std::set<std::uint32_t> lines_of(const esi::FileReport& report, std::string_view rule) {
+    std::set<std::uint32_t> lines;
+    for (const auto& d : report.diagnostics)
+        if (d.rule == rule) lines.insert(d.pos.line);
+    return lines;
+}
+
+std::set<std::uint32_t> expected_lines(const std::string& text, std::string_view rule) {
+    std::set<std::uint32_t> lines;
+    std::istringstream in(text);
+    std::string line;
+    std::uint32_t number = 0;
+    const std::string marker = "expect: " + std::string(rule) + " ";
+    const std::string marker_end = "expect: " + std::string(rule) + "-->";
+    while (std::getline(in, line)) {
+        ++number;
+        if (line.find(marker) != std::string::npos || line.find(marker_end) != std::string::npos) lines.insert(number);
+    }
+    return lines;
+}
+
+std::string describe(const esi::FileReport& report) {
+    std::string out;
+    for (const auto& d : report.diagnostics)
+        out += "  " + std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column) + " " + d.rule + ": " + d.message + "\n";
+    return out;
+}
+
+class RuleFixture : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(RuleFixture, FiresOnBadAndStaysSilentOnGood) {
+    const std::string id = GetParam();
+    const auto dir = fixture_dir(id);
+    ASSERT_TRUE(std::filesystem::exists(dir / "bad.xml")) << "rule " << id << " has no fixture " << dir / "bad.xml";
+    ASSERT_TRUE(std::filesystem::exists(dir / "good.xml")) << "rule " << id << " has no fixture " << dir / "good.xml";
+
+    const std::string bad_text = read_text(dir / "bad.xml");
+    const auto bad = esi::lint_bytes(bad_text, (dir / "bad.xml").string(), config_for(dir, dir / "bad.xml"));
+    const auto expected = expected_lines(bad_text, id);
+    ASSERT_FALSE(expected.empty()) << "bad.xml of " << id << " marks no line with <!-- expect: " << id << " -->";
+    EXPECT_EQ(lines_of(bad, id), expected) << "diagnostics on bad.xml:\n" << describe(bad);
+    for (const auto& d : bad.diagnostics) EXPECT_NE(d.rule, "xml-syntax") << "fixture is not well-formed: " << d.message;
+
+    const auto good = esi::lint_bytes(read_text(dir / "good.xml"), (dir / "good.xml").string(), config_for(dir, dir / "good.xml"));
+    EXPECT_TRUE(lines_of(good, id).empty()) << "diagnostics on good.xml:\n" << describe(good);
+    for (const auto& d : good.diagnostics) EXPECT_NE(d.rule, "xml-syntax") << "fixture is not well-formed: " << d.message;
+}
+
+std::vector<std::string> checked_rules() {
+    std::vector<std::string> ids;
+    for (const auto& rule : esi::all_rules())
+        if (rule.check) ids.emplace_back(rule.id);
+    return ids;
+}
+
+INSTANTIATE_TEST_SUITE_P(Catalogue, RuleFixture, ::testing::ValuesIn(checked_rules()),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             std::string name = info.param;
+                             for (char& c : name)
+                                 if (c == '-') c = '_';
+                             return name;
+                         });
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(RuleFixture);
+
+TEST(RuleCatalogue, IdsAreUniqueKebabCaseWithKnownAreaPrefix) {
+    static const std::set<std::string> areas = {"xml", "identity", "sm", "fmmu", "pdo", "od", "mailbox", "initcmd",
+                                                "dc", "eeprom", "deprecated", "profile", "lint"};
+    std::set<std::string> seen;
+    for (const auto& rule : esi::all_rules()) {
+        const std::string id(rule.id);
+        EXPECT_TRUE(seen.insert(id).second) << "duplicate rule id " << id;
+        EXPECT_TRUE(areas.count(id.substr(0, id.find('-')))) << id << " has no known area prefix";
+        for (char c : id) EXPECT_TRUE((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-') << id;
+        EXPECT_FALSE(rule.summary.empty()) << id;
+        EXPECT_GT(rule.rationale.size(), 60u) << id << ": the rationale must explain and cite a source";
+        EXPECT_FALSE(rule.bad_example.empty()) << id;
+        EXPECT_FALSE(rule.good_example.empty()) << id;
+    }
+}
+
+}  // namespace
