@@ -1,0 +1,67 @@
+#include "check/queries.hpp"
+
+namespace esi::rules {
+
+std::vector<const Device*> all_devices(const EsiDocument& document) {
+    std::vector<const Device*> out;
+    for (const auto& info : document.infos)
+        for (const auto& device : info.devices) out.push_back(&device);
+    return out;
+}
+
+SmRole role_from_text(std::string_view text) {
+    if (text == "MBoxOut") return SmRole::mailbox_out;
+    if (text == "MBoxIn") return SmRole::mailbox_in;
+    if (text == "Outputs") return SmRole::outputs;
+    if (text == "Inputs") return SmRole::inputs;
+    return SmRole::unknown;
+}
+
+bool control_byte_is_mailbox(std::uint32_t control_byte) { return (control_byte & 0x03) == 0x02; }
+bool control_byte_is_write(std::uint32_t control_byte) { return ((control_byte >> 2) & 0x03) == 0x01; }
+
+SmRole sm_role(const SyncManager& sm) {
+    const SmRole from_text = role_from_text(sm.type);
+    if (from_text != SmRole::unknown || !sm.control_byte) return from_text;
+    const bool mailbox = control_byte_is_mailbox(*sm.control_byte);
+    const bool write = control_byte_is_write(*sm.control_byte);
+    if (mailbox) return write ? SmRole::mailbox_out : SmRole::mailbox_in;
+    return write ? SmRole::outputs : SmRole::inputs;
+}
+
+std::string_view to_string(SmRole role) {
+    switch (role) {
+        case SmRole::mailbox_out: return "MBoxOut";
+        case SmRole::mailbox_in: return "MBoxIn";
+        case SmRole::outputs: return "Outputs";
+        case SmRole::inputs: return "Inputs";
+        case SmRole::unknown: return "unknown";
+    }
+    return "unknown";
+}
+
+DictionaryIndex::DictionaryIndex(const Dictionary* dictionary) : dictionary_(dictionary) {
+    if (!dictionary) return;
+    objects_.reserve(dictionary->objects.size());
+    for (const auto& o : dictionary->objects) objects_.emplace(o.index, &o);
+}
+
+const Object* DictionaryIndex::object(std::uint32_t index) const {
+    const auto it = objects_.find(index);
+    return it == objects_.end() ? nullptr : it->second;
+}
+
+const ObjectLayout* DictionaryIndex::layout(std::uint32_t index) const {
+    const Object* o = object(index);
+    if (!o) return nullptr;
+    auto it = layouts_.find(index);
+    if (it == layouts_.end()) it = layouts_.emplace(index, layout_of(dictionary_, *o)).first;
+    return &it->second;
+}
+
+const ObjectEntry* DictionaryIndex::entry(std::uint32_t index, std::uint32_t subindex) const {
+    const ObjectLayout* l = layout(index);
+    return l ? l->entry(subindex) : nullptr;
+}
+
+}  // namespace esi::rules

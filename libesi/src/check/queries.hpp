@@ -1,0 +1,44 @@
+#pragma once
+// Questions many rules ask of the model, answered once here.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "esi/model/ethercat_info.hpp"
+#include "esi/model/object_layout.hpp"
+
+namespace esi::rules {
+
+// Every device of a document (all infos of an EtherCATInfoList).
+[[nodiscard]] std::vector<const Device*> all_devices(const EsiDocument& document);
+
+// What a SyncManager is for, from its text (MBoxOut …) or, when the text is missing, its
+// ControlByte (ETG.1000.4 register 0x0804: bits 1:0 mode, bits 3:2 direction).
+enum class SmRole { mailbox_out, mailbox_in, outputs, inputs, unknown };
+[[nodiscard]] SmRole sm_role(const SyncManager& sm);
+[[nodiscard]] std::string_view to_string(SmRole role);
+[[nodiscard]] SmRole role_from_text(std::string_view text);  // MBoxOut, MBoxIn, Outputs, Inputs
+// ControlByte bits: 0b10 in bits 1:0 is mailbox, 0b00 buffered; bits 3:2 = 01 write (master -> slave).
+[[nodiscard]] bool control_byte_is_mailbox(std::uint32_t control_byte);
+[[nodiscard]] bool control_byte_is_write(std::uint32_t control_byte);
+
+// Objects of a dictionary by index, built once per device (dictionaries reach thousands of objects).
+class DictionaryIndex {
+public:
+    explicit DictionaryIndex(const Dictionary* dictionary);
+    [[nodiscard]] const Dictionary* dictionary() const { return dictionary_; }
+    [[nodiscard]] const Object* object(std::uint32_t index) const;
+    // The sub-entry a PDO entry or InitCmd addresses; nullptr when the object or sub-index is missing.
+    [[nodiscard]] const ObjectEntry* entry(std::uint32_t index, std::uint32_t subindex) const;
+    [[nodiscard]] const ObjectLayout* layout(std::uint32_t index) const;
+
+private:
+    const Dictionary* dictionary_;
+    std::unordered_map<std::uint32_t, const Object*> objects_;
+    mutable std::unordered_map<std::uint32_t, ObjectLayout> layouts_;
+};
+
+}  // namespace esi::rules
