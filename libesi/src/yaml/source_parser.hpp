@@ -1,0 +1,111 @@
+#pragma once
+// YAML device source -> model (before derivation). One class, split over parse_*.cpp by part of
+// the format: common pieces, the object dictionary, devices, modules and slots. The format is
+// documented in docs/yaml-format.md; the keys of every mapping are in format_keys.cpp.
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "esi/derive/derive.hpp"
+#include "esi/device_selector.hpp"
+#include "esi/model/ethercat_info.hpp"
+#include "yaml/yaml_reader.hpp"
+
+namespace esi::yaml {
+
+// Objects by name, for PDO entries and InitCmds that name an object instead of its index.
+struct ObjectNames {
+    struct Target {
+        std::uint32_t index = 0;
+        bool is_var = true;
+        std::vector<std::uint32_t> ambiguous_with;  // other indices with the same name
+    };
+    std::map<std::string, Target, std::less<>> by_name;
+};
+
+// An object reference as written: 0x6040, "0x6041:1", "Controlword".
+struct ObjectRef {
+    std::uint32_t index = 0;
+    std::optional<std::uint32_t> subindex;  // written as "index:subindex"
+    bool names_record = false;              // a record named by its name: the sub-index must follow
+};
+
+struct ParsedDevice {
+    Device device;
+    DeviceIntent intent;
+    std::optional<Limits> limits;
+};
+
+struct ParsedModule {
+    Module module;
+    ModuleIntent intent;
+};
+
+class SourceParser {
+public:
+    explicit SourceParser(Reader& reader) : r_(reader) {}
+
+    // The whole file; nullopt when the root is not a mapping.
+    std::optional<EtherCATInfo> parse(const YAML::Node& root, std::vector<ParsedDevice>& devices,
+                                      std::vector<ParsedModule>& modules);
+
+private:
+    // ---- parse_common.cpp --------------------------------------------------------------------
+    void images(const Fields& f, Images& out);
+    void extras(const Fields& f, std::string_view key, Extras& out);
+    Names names_of(const Fields& f, std::string_view key);
+    std::optional<ObjectRef> object_ref(const YAML::Node& node, const ObjectNames& names, std::string_view what);
+    std::optional<std::vector<Transition>> transitions(const YAML::Node& node);
+    DeriveOptions derive_options(const YAML::Node& node, bool module);
+    std::optional<Profile> profile(const YAML::Node& node);
+    void init_cmds(const YAML::Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
+                   std::vector<InitCmdValue>* values);
+    std::optional<Mailbox> mailbox(const YAML::Node& node, Context context, MailboxLayout* layout, const ObjectNames& names,
+                                   std::vector<InitCmdValue>* coe_values);
+    std::vector<Pdo> pdos(const YAML::Node& node, PdoDirection direction, const ObjectNames& names, std::vector<bool>* assign);
+    std::optional<PdoEntry> pdo_entry(const YAML::Node& node, const ObjectNames& names);
+
+    // ---- parse_dictionary.cpp ----------------------------------------------------------------
+    // Reads data_types and objects into `dictionary`; returns the names of the objects.
+    ObjectNames dictionary(const Fields& f, Dictionary& dictionary);
+    std::optional<DataType> data_type(const YAML::Node& node);
+    void object(const YAML::Node& key, const YAML::Node& value, Dictionary& dictionary,
+                std::map<std::uint32_t, std::pair<SourcePos, std::string>>& seen);
+    std::optional<ObjectFlags> flags(const Fields& f);
+    std::optional<ObjectInfo> info(const Fields& f, const Dictionary& dictionary, const std::string& type_name,
+                                   std::string_view what);
+    std::optional<Number> typed_integer(const YAML::Node& node, const Dictionary& dictionary, const std::string& type_name,
+                                        std::string_view what);
+
+    // ---- parse_device.cpp --------------------------------------------------------------------
+    std::optional<ParsedDevice> device(const YAML::Node& node, std::optional<std::uint32_t> vendor_id,
+                                       const std::vector<ParsedModule>& modules, std::size_t group_count,
+                                       const std::string* only_group);
+    std::optional<Eeprom> eeprom(const YAML::Node& node);
+    std::vector<SyncManager> sync_managers(const YAML::Node& node, std::vector<SourcePos>& size_pos);
+    std::vector<Fmmu> fmmus(const YAML::Node& node);
+    std::vector<SyncUnit> sync_units(const YAML::Node& node);
+    std::optional<Dc> dc(const YAML::Node& node);
+    std::optional<DcTime> dc_time(const YAML::Node& node, bool shift);
+
+    // ---- parse_module.cpp --------------------------------------------------------------------
+    std::optional<ParsedModule> module(const YAML::Node& node);
+    std::optional<Slots> slots(const YAML::Node& node, const std::vector<ParsedModule>& modules);
+    std::optional<std::uint32_t> module_ident(const YAML::Node& node, const std::vector<ParsedModule>& modules,
+                                              std::string_view what);
+
+    // ---- source.cpp ---------------------------------------------------------------------------
+    std::optional<Vendor> vendor(const YAML::Node& node);
+    std::optional<Group> group(const YAML::Node& node);
+
+    Reader& r_;
+};
+
+// Objects a device or module declares, indexed by primary name (ambiguous names are marked).
+ObjectNames index_object_names(const Dictionary& dictionary);
+
+}  // namespace esi::yaml
