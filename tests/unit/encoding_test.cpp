@@ -69,3 +69,15 @@ TEST(Encoding, RejectsOverlongAndSurrogatesInUtf8) {
     EXPECT_FALSE(esi::is_valid_utf8("\xF4\x90\x80\x80"));
     EXPECT_TRUE(esi::is_valid_utf8("plain ascii that is longer than eight bytes \xF0\x9F\x98\x80"));
 }
+
+TEST(Encoding, OwnedDecodingGivesTheSameResultAsCopying) {
+    for (const std::string& input : {std::string("\xEF\xBB\xBF<a>\xC3\xA4</a>"), std::string("<a>ok\xDF" "er</a>"),
+                                    std::string("<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><a>\xE4</a>"),
+                                    std::string("\xFF\xFE<\0a\0/\0>\0", 10)}) {
+        const auto copied = esi::decode_xml_bytes(input);
+        const auto owned = esi::decode_xml_bytes_owned(input);
+        EXPECT_EQ(copied.utf8, owned.utf8);
+        EXPECT_EQ(copied.encoding, owned.encoding);
+        EXPECT_EQ(copied.first_invalid_offset, owned.first_invalid_offset);
+    }
+}
