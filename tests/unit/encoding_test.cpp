@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "esi/encoding.hpp"
+#include "esi/source_text.hpp"
 
 using esi::decode_xml_bytes;
 using esi::SourceEncoding;
@@ -80,4 +81,18 @@ TEST(Encoding, OwnedDecodingGivesTheSameResultAsCopying) {
         EXPECT_EQ(copied.encoding, owned.encoding);
         EXPECT_EQ(copied.first_invalid_offset, owned.first_invalid_offset);
     }
+}
+
+TEST(SourceText, PositionsCountCodePointsAndLines) {
+    const std::string text = "ab\n\xC3\xA4\xC3\xB6x\r\n\n" + std::string(40, 'y') + "\xE2\x82\xAC" + "z";
+    esi::SourceText source("t.xml", text);
+    EXPECT_EQ(source.position_of(0), (esi::SourcePos{1, 1}));
+    EXPECT_EQ(source.position_of(7), (esi::SourcePos{2, 3}));  // 'x' after two 2-byte letters
+    EXPECT_EQ(source.position_of(text.size() - 1), (esi::SourcePos{4, 42}));
+    esi::PositionCursor cursor(source);
+    for (std::size_t offset : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{11}, text.size() - 1, std::size_t{3}})
+        EXPECT_EQ(cursor.position_of(offset), source.position_of(offset)) << offset;
+    EXPECT_EQ(source.line(2), "\xC3\xA4\xC3\xB6x");
+    EXPECT_EQ(esi::count_newlines(text), 3u);
+    EXPECT_EQ(esi::count_code_points("\xE2\x82\xAC" "abcdefghijk\xC3\xA4"), 13u);
 }
