@@ -226,6 +226,21 @@ std::string render_rule_list_json() {
     return ordered_json{{"rules", std::move(rules)}}.dump(2) + "\n";
 }
 
+std::string render_rule_list_markdown() {
+    std::string out =
+        "# esi-lint rules\n\n"
+        "Generated from the rule catalogue (`esi-lint --list-rules --format markdown`); a test keeps this file in sync.\n"
+        "Every rule can be switched off or re-graded in `.esi-lint.yaml` (see lint-config.md) and suppressed inline with\n"
+        "`<!-- esi-lint: disable=RULE -->`.\n\n"
+        "| Rule | Default | Summary |\n|---|---|---|\n";
+    for (const Rule& r : all_rules()) out += fmt::format("| [`{}`](#{}) | {} | {} |\n", r.id, r.id, to_string(r.default_severity), r.summary);
+    for (const Rule& r : all_rules()) {
+        out += fmt::format("\n## {}\n\n**{}** (default severity: {})\n\n{}\n\nBad:\n\n```xml\n{}\n```\n\nGood:\n\n```xml\n{}\n```\n",
+                           r.id, r.summary, to_string(r.default_severity), r.rationale, r.bad_example, r.good_example);
+    }
+    return out;
+}
+
 std::string render_rule_explanation(std::string_view rule_id) {
     const Rule* r = find_rule(rule_id);
     if (!r) return {};
