@@ -1048,19 +1048,6 @@ std::string describe_parse_error(const pugi::xml_parse_result& result) {
     }
 }
 
-// Position of a byte offset in the original (undecoded) bytes: used for encoding faults.
-SourcePos raw_position(std::string_view bytes, std::size_t offset) {
-    std::uint32_t line = 1;
-    std::size_t line_start = 0;
-    for (std::size_t i = 0; i < offset && i < bytes.size(); ++i) {
-        if (bytes[i] == '\n') {
-            ++line;
-            line_start = i + 1;
-        }
-    }
-    return SourcePos{line, static_cast<std::uint32_t>(offset - line_start + 1)};
-}
-
 SourcePos error_position(const SourceText& source, const pugi::xml_parse_result& result) {
     auto offset = static_cast<std::size_t>(result.offset < 0 ? 0 : result.offset);
     offset = std::min(offset, source.text().size());
@@ -1076,14 +1063,18 @@ SourcePos error_position(const SourceText& source, const pugi::xml_parse_result&
 }  // namespace
 
 ReadResult read_esi(std::string_view bytes, std::string path, const ReadOptions& options) {
+    return read_esi_owned(std::string(bytes), std::move(path), options);
+}
+
+ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOptions& options) {
     ReadResult result;
-    DecodedText decoded = decode_xml_bytes(bytes);
+    DecodedText decoded = decode_xml_bytes_owned(std::move(bytes_in));
     auto source = std::make_shared<SourceText>(path, std::move(decoded.utf8));
     result.source = source;
 
     if (decoded.first_invalid_offset != std::string::npos) {
         const bool utf16 = decoded.encoding == SourceEncoding::utf16le || decoded.encoding == SourceEncoding::utf16be;
-        const SourcePos pos = utf16 ? SourcePos{} : raw_position(bytes, decoded.first_invalid_offset);
+        const SourcePos pos = source->position_of(decoded.first_invalid_offset);
         result.diagnostics.emplace(Severity::error, "xml-encoding",
                                    utf16 ? "input is not valid UTF-16 (lone surrogate or odd length); the bad units were replaced"
                                          : "input is not valid " + std::string(to_string(decoded.encoding)) +
@@ -1157,7 +1148,7 @@ ReadResult read_esi_file(const std::filesystem::path& path, const ReadOptions& o
         result.diagnostics.emplace(Severity::error, "io-error", "cannot read file: " + error, path.string(), SourcePos{});
         return result;
     }
-    return read_esi(*bytes, path.string(), options);
+    return read_esi_owned(std::move(*bytes), path.string(), options);
 }
 
 }  // namespace esi
