@@ -85,16 +85,31 @@ void derive_device(Device& device, const DeviceIntent& intent, const std::string
     }
 }
 
-void derive_module(Module& module, const ModuleIntent& intent, const std::string& path, Diagnostics& diagnostics) {
+void derive_module(Module& module, const ModuleIntent& intent, const Device* host, const std::string& path,
+                   Diagnostics& diagnostics) {
     using namespace derive;
     Context context(path, diagnostics);
     Dictionary* dictionary = module.profile && module.profile->dictionary ? &*module.profile->dictionary : nullptr;
+    const Dictionary* lookup = dictionary ? dictionary : (host ? host->dictionary() : nullptr);
     if (intent.options.pdo_entries) {
-        derive_pdo_entries(module.rx_pdos, dictionary, context);
-        derive_pdo_entries(module.tx_pdos, dictionary, context);
+        derive_pdo_entries(module.rx_pdos, lookup, context);
+        derive_pdo_entries(module.tx_pdos, lookup, context);
+    }
+    if (intent.options.pdo_assignment && host) {
+        std::optional<std::uint32_t> outputs, inputs;
+        for (std::uint32_t n = 0; n < host->sms.size(); ++n) {
+            if (!outputs && host->sms[n].type == "Outputs") outputs = n;
+            if (!inputs && host->sms[n].type == "Inputs") inputs = n;
+        }
+        auto assign = [&](std::vector<Pdo>& pdos, const std::vector<bool>& wanted, std::optional<std::uint32_t> sm) {
+            for (std::size_t i = 0; i < pdos.size(); ++i)
+                if (!pdos[i].sm && sm && (i >= wanted.size() || wanted[i])) pdos[i].sm = sm;
+        };
+        assign(module.rx_pdos, intent.rx_assign, outputs);
+        assign(module.tx_pdos, intent.tx_assign, inputs);
     }
     if (module.mailbox && module.mailbox->coe)
-        derive_init_values(module.mailbox->coe->init_cmds, intent.init_values, dictionary, context);
+        derive_init_values(module.mailbox->coe->init_cmds, intent.init_values, lookup, context);
     if (dictionary) {
         if (intent.options.data_types) derive_data_types(*dictionary, context);
         sort_objects(*dictionary);

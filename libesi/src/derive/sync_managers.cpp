@@ -8,7 +8,8 @@
 // The mailbox sizes come from `mailbox:`; a process-data SM's size is the sum of the PDOs
 // assigned to it by default (the servo manuals' errors 62-3/62-4 and STÖBER's "PDO Länge ist
 // nicht korrekt" are what a wrong size costs). An SM without data is disabled, since devices
-// reject an enabled SM of length 0 (ethercrab #354).
+// reject an enabled SM of length 0 (ethercrab #354), except on a modular device, whose process
+// data comes from the modules in its slots.
 
 #include <algorithm>
 #include <numeric>
@@ -154,7 +155,9 @@ void derive_sync_managers(Device& device, const DeviceIntent& intent, Context& c
         if (!sm.default_size && bytes > 0) sm.default_size = static_cast<std::uint32_t>(std::min<std::uint64_t>(bytes, 0xFFFF));
         if (!sm.start_address) sm.start_address = cursor;
         if (!sm.control_byte) sm.control_byte = outputs ? 0x64u : 0x20u;
-        if (!sm.enable) sm.enable = sm.default_size.value_or(0) > 0 ? 1u : 0u;
+        // A modular device's process data comes from the modules plugged into its slots; the
+        // master sizes the SM, so it stays enabled without a default size.
+        if (!sm.enable) sm.enable = sm.default_size.value_or(0) > 0 || device.slots ? 1u : 0u;
         // Buffered SMs occupy three buffers of their size in ESC memory (ESC datasheet, SyncManager).
         const std::uint32_t footprint = std::max<std::uint32_t>(3u * sm.default_size.value_or(0), 1u);
         cursor = std::max(cursor, align_up(*sm.start_address + footprint, 0x80));
@@ -181,7 +184,7 @@ void derive_fmmus(Device& device) {
     for (const char* type : {"Outputs", "Inputs"}) {
         for (std::uint32_t n = 0; n < device.sms.size(); ++n) {
             const SyncManager& sm = device.sms[n];
-            if (sm.type != type || sm.enable.value_or(1) == 0 || sm.default_size.value_or(0) == 0) continue;
+            if (sm.type != type || sm.enable.value_or(1) == 0 || (sm.default_size.value_or(0) == 0 && !device.slots)) continue;
             Fmmu f;
             f.type = type;
             f.sm = n;

@@ -44,8 +44,8 @@ std::optional<ParsedModule> SourceParser::module(const YAML::Node& node) {
         else
             init_cmds(*n, Context::init_coe, names, m.mailbox->coe->init_cmds, &out.intent.init_values);
     }
-    if (const YAML::Node* n = f->find("rxpdo")) m.rx_pdos = pdos(*n, PdoDirection::rx, names, nullptr);
-    if (const YAML::Node* n = f->find("txpdo")) m.tx_pdos = pdos(*n, PdoDirection::tx, names, nullptr);
+    if (const YAML::Node* n = f->find("rxpdo")) m.rx_pdos = pdos(*n, PdoDirection::rx, names, &out.intent.rx_assign);
+    if (const YAML::Node* n = f->find("txpdo")) m.tx_pdos = pdos(*n, PdoDirection::tx, names, &out.intent.tx_assign);
     r_.optional_text(*f, "dc_op_mode", m.dc_op_mode_name);
     if (const YAML::Node* n = f->find("derive")) out.intent.options = derive_options(*n, true);
     extras(*f, "xml", m.extras);

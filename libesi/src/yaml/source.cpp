@@ -176,18 +176,27 @@ DeviceSource load_device_source(std::string_view bytes, const std::string& path,
         std::vector<yaml::ParsedModule> modules;
         std::optional<EtherCATInfo> info = parser.parse(root, devices, modules);
         if (info && !diagnostics.has_errors()) {
-            for (auto& m : modules) {
-                derive_module(m.module, m.intent, path, diagnostics);
-                info->modules.push_back(std::move(m.module));
-            }
             std::vector<bool> with_groups;
             for (auto& d : devices) {
                 derive_device(d.device, d.intent, path, diagnostics);
                 with_groups.push_back(d.intent.options.groups);
                 if (d.limits && d.device.type.product_code)
                     out.device_limits.emplace_back(DeviceSelector{*d.device.type.product_code, d.device.type.revision_no}, *d.limits);
-                info->devices.push_back(std::move(d.device));
             }
+            // A module's host is the first device whose slots take it.
+            for (auto& m : modules) {
+                const Device* host = nullptr;
+                for (const auto& d : devices) {
+                    if (host) break;
+                    if (!d.device.slots) continue;
+                    for (const auto& slot : d.device.slots->slots)
+                        for (const auto& id : slot.module_idents)
+                            if (id.value == m.module.module_ident) host = &d.device;
+                }
+                derive_module(m.module, m.intent, host, path, diagnostics);
+                info->modules.push_back(std::move(m.module));
+            }
+            for (auto& d : devices) info->devices.push_back(std::move(d.device));
             derive_groups(*info, with_groups);
         }
         diagnostics.sort();

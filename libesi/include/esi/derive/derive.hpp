@@ -83,13 +83,19 @@ struct DeviceIntent {
 struct ModuleIntent {
     DeriveOptions options;
     std::vector<InitCmdValue> init_values;
+    std::vector<bool> rx_assign;  // parallel to Module::rx_pdos
+    std::vector<bool> tx_assign;
 };
 
 // Completes one device. `path` is the source file the positions refer to.
 void derive_device(Device& device, const DeviceIntent& intent, const std::string& path, Diagnostics& diagnostics);
 
-// Completes one module (PDO entries from its own dictionary, InitCmd values, data types).
-void derive_module(Module& module, const ModuleIntent& intent, const std::string& path, Diagnostics& diagnostics);
+// Completes one module: PDO entries from its own dictionary, else from the dictionary of `host`
+// (a device whose slots take the module, as in ETG.2001 files where module PDOs map the device's
+// slot-relative objects); the default PDO assignment to the host's Outputs/Inputs SMs; InitCmd
+// values; data types.
+void derive_module(Module& module, const ModuleIntent& intent, const Device* host, const std::string& path,
+                   Diagnostics& diagnostics);
 
 // Adds a Group for every GroupType that names no declared group (name = type). `devices`, when
 // not empty, says per device whether its group may be derived.
