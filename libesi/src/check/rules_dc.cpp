@@ -121,17 +121,18 @@ void add_dc(std::vector<Rule>& out) {
     out.push_back(Rule{
         "dc-opmode-name", Severity::error, "Dc OpMode without Name or with a repeated Name",
         "Masters list the operation modes by Name and modules select theirs through DcOpModeName, so every OpMode "
-        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required; domain note S26; "
-        "leducp/KickCAT rejects incomplete OpModes).",
+        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required; domain note S26). "
+        "Beckhoff's EL1262 description in the corpus has two OpModes named DcSync in one device.",
         "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC</Name>...</OpMode>",
         "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC-Sync01</Name>...</OpMode>", &check_name});
     out.push_back(Rule{
         "dc-assign-activate", Severity::error, "AssignActivate that asks for SYNC signals without activating the cyclic unit",
         "The high byte of AssignActivate goes to ESC register 0x0981: bit 0 activates the cyclic unit, bit 1 SYNC0, "
         "bit 2 SYNC1. SYNC0/SYNC1 bits without bit 0 (e.g. #x0200 instead of #x0300) generate no signal, so a device "
-        "that waits for SYNC0 never leaves SAFE-OP (Beckhoff ESC datasheet section II, register 0x0981; domain note "
-        "S26: #x0300 SYNC0, #x0700 SYNC0+SYNC1; STÖBER ECS 5000 manual §9: the inverter refuses SAFE-OP without a "
-        "valid SYNC0). A missing AssignActivate or one wider than 16 bits is reported too.",
+        "that waits for SYNC0 does not reach SAFE-OP (Beckhoff ESC datasheet section II, register 0x0981; domain note "
+        "S26: #x0300 SYNC0, #x0700 SYNC0+SYNC1; STÖBER ECS 5000 manual §11.5: with synchronisation active the "
+        "inverter stays in PRE-OP without a valid SYNC0 cycle). A missing AssignActivate or one wider than 16 bits "
+        "is reported too.",
         "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0200</AssignActivate></OpMode>",
         "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0300</AssignActivate></OpMode>",
         &check_assign_activate});

@@ -367,14 +367,16 @@ void add_sm(std::vector<Rule>& out) {
         &check_mailbox_position});
     out.push_back(Rule{
         "sm-overlap", Severity::error, "Two SyncManagers whose memory ranges overlap",
-        "Each SyncManager owns [StartAddress, StartAddress + size) of ESC memory, and a buffered one (ControlByte bits "
-        "1:0 = 00) owns three consecutive buffers of that size (ESC datasheet '3-buffer mode'); the master only "
-        "writes the first address to the ESC. Overlapping ranges corrupt each other's data. The size is DefaultSize, "
-        "else the bytes of the PDOs assigned to the SM by default (domain note S7; the gen_od review computes SM "
-        "addresses the same way).",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm>\n"
+        "Each SyncManager owns [StartAddress, StartAddress + size) of ESC memory, and a buffered process-data SM "
+        "(ControlByte bits 1:0 = 00) owns three consecutive buffers of that size (ESC datasheet '3-buffer mode'); the "
+        "master only writes the first address to the ESC. Overlapping ranges corrupt each other's data (domain note "
+        "S7; the gen_od review computes SM addresses the same way). A process-data SM's size is that of the PDOs "
+        "assigned to it by default, since the master computes it from them, else DefaultSize; a mailbox SM counts "
+        "once (a buffered mailbox is sm-mailbox-mode's finding). SMs below 0x1000, in the register area (Beckhoff "
+        "terminals put 1-byte buffered SMs on the digital I/O bytes 0x0F00, 0x0F01), count once as well.",
+        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
         "<Sm StartAddress=\"#x1140\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm>\n"
+        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
         "<Sm StartAddress=\"#x1200\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
         &check_overlap});
     out.push_back(Rule{
