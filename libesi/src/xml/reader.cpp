@@ -220,8 +220,10 @@ private:
 
 bool Reader::read_image(Images& images, const pugi::xml_node c, std::string_view name) {
     if (name == "ImageData16x14") images.image_data16x14 = hex(c);
-    else if (name == "Image16x14") images.image16x14 = text_of(c);
-    else if (name == "ImageFile16x14") images.image_file16x14 = text_of(c);
+    else if (name == "Image16x14") {
+        images.image16x14 = text_of(c);
+        images.image16x14_pos = pos_of(c);
+    } else if (name == "ImageFile16x14") images.image_file16x14 = text_of(c);
     else return false;
     return true;
 }
