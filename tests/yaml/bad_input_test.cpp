@@ -47,8 +47,9 @@ TEST(YamlBadInput, TheHeaderAloneIsValid) {
 }
 
 TEST(YamlBadInput, SyntaxErrorIsLocated) {
-    expect_error(load_yaml("vendor: { id: 1, name: x\ndevices: []\n"), "yaml-syntax", 2, 8, "end of map flow");
-    expect_error(load_yaml("vendor:\n\tid: 1\n"), "yaml-syntax", 2, 4);
+    expect_error(load_yaml("vendor: { id: 1, name: x\ndevices: []\n"), "yaml-syntax", 2, 8, "did not find expected ',' or '}'");
+    expect_error(load_yaml("vendor:\n\tid: 1\n"), "yaml-syntax", 2, 1, "cannot start any token");  // a tab indents
+    expect_error(load_yaml("vendor: {id: 1, name: \"x\xff\"}\n"), "yaml-syntax", 1, 25, "UTF-8");
 }
 
 TEST(YamlBadInput, UnknownKeyHasDidYouMean) {

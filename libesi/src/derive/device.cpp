@@ -47,8 +47,17 @@ std::map<std::uint32_t, const Object*> object_index(const Dictionary& dictionary
 }
 
 void sort_objects(Dictionary& dictionary) {
-    std::stable_sort(dictionary.objects.begin(), dictionary.objects.end(),
-                     [](const Object& a, const Object& b) { return a.index < b.index; });
+    auto& objects = dictionary.objects;
+    const auto by_index = [](const Object& a, const Object& b) { return a.index < b.index; };
+    if (std::is_sorted(objects.begin(), objects.end(), by_index)) return;
+    // Objects are large: sort their positions, then move each object once.
+    std::vector<std::size_t> order(objects.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return objects[a].index < objects[b].index; });
+    std::vector<Object> sorted;
+    sorted.reserve(objects.size());
+    for (std::size_t i : order) sorted.push_back(std::move(objects[i]));
+    objects = std::move(sorted);
 }
 
 }  // namespace derive

@@ -23,6 +23,9 @@ std::string unique_type_name(const Dictionary& dictionary, const std::string& ba
 }
 
 std::uint64_t type_bit_size(const Dictionary& dictionary, const std::string& type_name) {
+    // Basic types, STRING(n) and arrays of basic types have their size in the name: no need to
+    // search the dictionary's DataTypes (a linear list) for the common case.
+    if (const auto implied = implied_bit_size(type_name)) return *implied;
     const ResolvedType resolved = resolve_type(&dictionary, type_name);
     if (resolved.cycle) return 0;
     return resolved.bit_size;

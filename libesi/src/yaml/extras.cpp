@@ -27,7 +27,7 @@ XmlElement convert(const pugi::xml_node n, std::string after, SourcePos pos, std
     return e;
 }
 
-void read_element(Reader& reader, const YAML::Node& text_node, const std::string& after, Extras& out, std::string_view what) {
+void read_element(Reader& reader, const Node& text_node, const std::string& after, Extras& out, std::string_view what) {
     const std::optional<std::string> text = reader.text(text_node, what);
     if (!text) return;
     pugi::xml_document doc;
@@ -51,10 +51,10 @@ void read_element(Reader& reader, const YAML::Node& text_node, const std::string
 
 }  // namespace
 
-void read_extras(Reader& reader, const YAML::Node& node, Extras& out, std::string_view what) {
+void read_extras(Reader& reader, const Node& node, Extras& out, std::string_view what) {
     const auto fields = reader.mapping(node, Context::xml, what);
     if (!fields) return;
-    if (const YAML::Node* attributes = fields->find("attributes")) {
+    if (const Node* attributes = fields->find("attributes")) {
         if (!attributes->IsMap()) {
             reader.error(*attributes, "yaml-type", "'attributes' must map XML attribute names to values");
         } else {
@@ -65,7 +65,7 @@ void read_extras(Reader& reader, const YAML::Node& node, Extras& out, std::strin
             }
         }
     }
-    if (const YAML::Node* elements = fields->find("elements")) {
+    if (const Node* elements = fields->find("elements")) {
         const auto items = reader.sequence(*elements, "elements");
         if (!items) return;
         for (const auto& item : *items) {
@@ -73,7 +73,7 @@ void read_extras(Reader& reader, const YAML::Node& node, Extras& out, std::strin
                 const auto element = reader.mapping(item, Context::xml_element, "an xml element");
                 if (!element || !reader.require(*element, "xml", "an xml element")) continue;
                 std::string after;
-                if (const YAML::Node* a = element->find("after")) after = reader.text(*a, "after").value_or("");
+                if (const Node* a = element->find("after")) after = reader.text(*a, "after").value_or("");
                 read_element(reader, *element->find("xml"), after, out, "xml");
             } else {
                 read_element(reader, item, "", out, "elements");

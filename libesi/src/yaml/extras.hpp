@@ -12,13 +12,13 @@
 
 #include <string_view>
 
-#include <yaml-cpp/yaml.h>
+#include "yaml/tree.hpp"
 
 #include "esi/model/common.hpp"
 #include "yaml/yaml_reader.hpp"
 
 namespace esi::yaml {
 
-void read_extras(Reader& reader, const YAML::Node& node, Extras& out, std::string_view what);
+void read_extras(Reader& reader, const Node& node, Extras& out, std::string_view what);
 
 }  // namespace esi::yaml

@@ -42,10 +42,13 @@ std::optional<std::uint32_t> padding_bits(std::string_view text) {
 
 ObjectNames index_object_names(const Dictionary& dictionary) {
     ObjectNames out;
+    std::set<std::string_view> structured;
+    for (const auto& t : dictionary.data_types)
+        if (!t.sub_items.empty()) structured.insert(t.name);
     for (const auto& o : dictionary.objects) {
+        const bool is_var = !structured.count(o.type);
         for (const auto& n : o.names) {
             if (n.text.empty()) continue;
-            const bool is_var = !dictionary.find_data_type(o.type) || dictionary.find_data_type(o.type)->sub_items.empty();
             auto [it, inserted] = out.by_name.emplace(n.text, ObjectNames::Target{o.index, is_var, {}});
             if (!inserted && it->second.index != o.index) it->second.ambiguous_with.push_back(o.index);
         }
@@ -54,24 +57,24 @@ ObjectNames index_object_names(const Dictionary& dictionary) {
 }
 
 void SourceParser::images(const Fields& f, Images& out) {
-    if (const YAML::Node* n = f.find("image_data")) out.image_data16x14 = r_.hex(*n, "image_data");
-    if (const YAML::Node* n = f.find("image_file")) out.image_file16x14 = r_.text(*n, "image_file");
-    if (const YAML::Node* n = f.find("image16x14")) out.image16x14 = r_.text(*n, "image16x14");
+    if (const Node* n = f.find("image_data")) out.image_data16x14 = r_.hex(*n, "image_data");
+    if (const Node* n = f.find("image_file")) out.image_file16x14 = r_.text(*n, "image_file");
+    if (const Node* n = f.find("image16x14")) out.image16x14 = r_.text(*n, "image16x14");
     const int given = (out.image_data16x14 ? 1 : 0) + (out.image_file16x14 ? 1 : 0) + (out.image16x14 ? 1 : 0);
     if (given > 1)
         r_.error(f.node(), "yaml-conflict", "give one of image_data, image_file and image16x14 (the ESI schema allows one image)");
 }
 
 void SourceParser::extras(const Fields& f, std::string_view key, Extras& out) {
-    if (const YAML::Node* n = f.find(key)) read_extras(r_, *n, out, key);
+    if (const Node* n = f.find(key)) read_extras(r_, *n, out, key);
 }
 
 Names SourceParser::names_of(const Fields& f, std::string_view key) {
-    if (const YAML::Node* n = f.find(key)) return r_.names(*n, key);
+    if (const Node* n = f.find(key)) return r_.names(*n, key);
     return {};
 }
 
-std::optional<ObjectRef> SourceParser::object_ref(const YAML::Node& node, const ObjectNames& names, std::string_view what) {
+std::optional<ObjectRef> SourceParser::object_ref(const Node& node, const ObjectNames& names, std::string_view what) {
     if (!node.IsScalar()) {
         r_.error(node, "yaml-type", "'" + std::string(what) + "' must be an object index (0x6040), \"index:subindex\" or an object name");
         return std::nullopt;
@@ -106,10 +109,10 @@ std::optional<ObjectRef> SourceParser::object_ref(const YAML::Node& node, const 
     return ref;
 }
 
-std::optional<std::vector<Transition>> SourceParser::transitions(const YAML::Node& node) {
+std::optional<std::vector<Transition>> SourceParser::transitions(const Node& node) {
     // The EtherCAT state machine's transitions (ETG.1000.6 6.4.1; servo manuals Tabelle 8).
     static constexpr std::string_view known[] = {"IP", "PI", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "IB", "BI"};
-    std::vector<YAML::Node> items;
+    std::vector<Node> items;
     if (node.IsSequence()) {
         for (const auto& n : node) items.push_back(n);
     } else {
@@ -134,7 +137,7 @@ std::optional<std::vector<Transition>> SourceParser::transitions(const YAML::Nod
     return out;
 }
 
-DeriveOptions SourceParser::derive_options(const YAML::Node& node, bool module) {
+DeriveOptions SourceParser::derive_options(const Node& node, bool module) {
     DeriveOptions o;
     if (node.IsScalar()) {
         if (auto all = r_.boolean(node, "derive"); all && !*all) o = DeriveOptions::none();
@@ -143,7 +146,7 @@ DeriveOptions SourceParser::derive_options(const YAML::Node& node, bool module) 
     const auto f = r_.mapping(node, module ? Context::module_derive : Context::derive, "derive");
     if (!f) return o;
     auto set = [&](std::string_view key, bool& field) {
-        if (const YAML::Node* n = f->find(key))
+        if (const Node* n = f->find(key))
             if (auto b = r_.boolean(*n, key)) field = *b;
     };
     set("groups", o.groups);
@@ -161,7 +164,7 @@ DeriveOptions SourceParser::derive_options(const YAML::Node& node, bool module) 
     return o;
 }
 
-std::optional<Profile> SourceParser::profile(const YAML::Node& node) {
+std::optional<Profile> SourceParser::profile(const Node& node) {
     Profile p;
     p.pos = pos_of(node);
     if (node.IsScalar()) {
@@ -178,7 +181,7 @@ std::optional<Profile> SourceParser::profile(const YAML::Node& node) {
     return p;
 }
 
-void SourceParser::init_cmds(const YAML::Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
+void SourceParser::init_cmds(const Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
                              std::vector<InitCmdValue>* values) {
     const auto items = r_.sequence(node, "init");
     if (!items) return;
@@ -197,7 +200,7 @@ void SourceParser::init_cmds(const YAML::Node& node, Context context, const Obje
                 cmd.index = ref->index;
                 cmd.subindex = ref->subindex;
             }
-            if (const YAML::Node* n = f->find("subindex")) {
+            if (const Node* n = f->find("subindex")) {
                 const auto sub = r_.integer<std::uint32_t>(*n, "subindex", 0, 255);
                 if (sub && ref && ref->subindex && *ref->subindex != *sub)
                     r_.error(*n, "yaml-conflict", "the sub-index is given twice ('object' and 'subindex') and differs");
@@ -206,19 +209,19 @@ void SourceParser::init_cmds(const YAML::Node& node, Context context, const Obje
                 r_.error(*f->find("object"), "yaml-reference", "this object is a record; give 'subindex'");
             }
             if (cmd.index && !cmd.subindex) cmd.subindex = 0;
-            if (const YAML::Node* n = f->find("value")) value = r_.scalar_value(*n, "value");
+            if (const Node* n = f->find("value")) value = r_.scalar_value(*n, "value");
             r_.optional_bool(*f, "complete_access", cmd.complete_access);
             r_.optional_bool(*f, "index_depend_on_slot", cmd.index_depend_on_slot);
             r_.optional_bool(*f, "index_depend_on_slot_group", cmd.index_depend_on_slot_group);
         }
         if (context == Context::init_soe) {
-            if (const YAML::Node* n = f->find("idn")) cmd.idn = r_.integer<std::int64_t>(*n, "idn", 0, 0xFFFF);
+            if (const Node* n = f->find("idn")) cmd.idn = r_.integer<std::int64_t>(*n, "idn", 0, 0xFFFF);
             r_.optional_integer(*f, "channel", cmd.channel);
         }
         if (context == Context::init_eoe) {
             if (r_.require(*f, "type", "an EoE InitCmd")) cmd.type = r_.integer<std::int64_t>(*f->find("type"), "type", INT32_MIN, INT32_MAX);
         }
-        if (const YAML::Node* n = f->find("data")) {
+        if (const Node* n = f->find("data")) {
             if (auto h = r_.hex(*n, "data")) {
                 cmd.data = *h;
                 cmd.has_data = true;
@@ -228,7 +231,7 @@ void SourceParser::init_cmds(const YAML::Node& node, Context context, const Obje
             r_.error(*f->key_node("data"), "yaml-conflict", "give either 'value' (typed by the object) or 'data' (raw bytes), not both");
         else if (!f->has("value") && !f->has("data"))
             r_.error(f->node(), "yaml-missing-key", context == Context::init_coe ? "an InitCmd needs 'value' or 'data'" : "an InitCmd needs 'data'");
-        if (const YAML::Node* n = f->find("adapt_automatically")) cmd.data_adapt_automatically = r_.boolean(*n, "adapt_automatically");
+        if (const Node* n = f->find("adapt_automatically")) cmd.data_adapt_automatically = r_.boolean(*n, "adapt_automatically");
         r_.optional_text(*f, "comment", cmd.comment);
         r_.optional_bool(*f, "fixed", cmd.fixed);
         r_.optional_bool(*f, "overwritten_by_module", cmd.overwritten_by_module);
@@ -238,7 +241,7 @@ void SourceParser::init_cmds(const YAML::Node& node, Context context, const Obje
     }
 }
 
-std::optional<Mailbox> SourceParser::mailbox(const YAML::Node& node, Context context, MailboxLayout* layout,
+std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, MailboxLayout* layout,
                                              const ObjectNames& names, std::vector<InitCmdValue>* coe_values) {
     const auto f = r_.mapping(node, context, "mailbox");
     if (!f) return std::nullopt;
@@ -246,16 +249,16 @@ std::optional<Mailbox> SourceParser::mailbox(const YAML::Node& node, Context con
     m.pos = f->pos();
     if (layout) {
         layout->pos = m.pos;
-        if (const YAML::Node* n = f->find("size")) {
+        if (const Node* n = f->find("size")) {
             layout->out_size = layout->in_size = r_.integer<std::uint32_t>(*n, "size", 8, 0xFFFF);
             layout->pos = pos_of(*n);
             for (const char* k : {"out_size", "in_size"})
                 if (f->has(k)) r_.error(*f->key_node(k), "yaml-conflict", "give either 'size' (both directions) or 'out_size'/'in_size'");
         }
-        if (const YAML::Node* n = f->find("out_size")) layout->out_size = r_.integer<std::uint32_t>(*n, "out_size", 8, 0xFFFF);
-        if (const YAML::Node* n = f->find("in_size")) layout->in_size = r_.integer<std::uint32_t>(*n, "in_size", 8, 0xFFFF);
-        if (const YAML::Node* n = f->find("out_address")) layout->out_address = r_.integer<std::uint32_t>(*n, "out_address", 0, 0xFFFF);
-        if (const YAML::Node* n = f->find("in_address")) layout->in_address = r_.integer<std::uint32_t>(*n, "in_address", 0, 0xFFFF);
+        if (const Node* n = f->find("out_size")) layout->out_size = r_.integer<std::uint32_t>(*n, "out_size", 8, 0xFFFF);
+        if (const Node* n = f->find("in_size")) layout->in_size = r_.integer<std::uint32_t>(*n, "in_size", 8, 0xFFFF);
+        if (const Node* n = f->find("out_address")) layout->out_address = r_.integer<std::uint32_t>(*n, "out_address", 0, 0xFFFF);
+        if (const Node* n = f->find("in_address")) layout->in_address = r_.integer<std::uint32_t>(*n, "in_address", 0, 0xFFFF);
     }
     r_.optional_bool(*f, "data_link_layer", m.data_link_layer);
     r_.optional_bool(*f, "real_time_mode", m.real_time_mode);
@@ -263,10 +266,10 @@ std::optional<Mailbox> SourceParser::mailbox(const YAML::Node& node, Context con
 
     // A protocol is `true`, `false` or a mapping of its settings.
     auto protocol = [&](std::string_view key, Context ctx) -> std::optional<Fields> {
-        const YAML::Node* n = f->find(key);
+        const Node* n = f->find(key);
         if (!n) return std::nullopt;
         if (n->IsScalar()) {
-            if (auto on = r_.boolean(*n, key); on && *on) return Fields(YAML::Node(YAML::NodeType::Map));
+            if (auto on = r_.boolean(*n, key); on && *on) return Fields(Node::empty_map());
             return std::nullopt;
         }
         return r_.mapping(*n, ctx, key);
@@ -295,7 +298,7 @@ std::optional<Mailbox> SourceParser::mailbox(const YAML::Node& node, Context con
         r_.optional_bool(*p, "ip", eoe.ip);
         r_.optional_bool(*p, "mac", eoe.mac);
         r_.optional_bool(*p, "time_stamp", eoe.time_stamp);
-        if (const YAML::Node* n = p->find("init")) init_cmds(*n, Context::init_eoe, names, eoe.init_cmds, nullptr);
+        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_eoe, names, eoe.init_cmds, nullptr);
         extras(*p, "xml", eoe.extras);
         m.eoe = std::move(eoe);
     }
@@ -304,7 +307,7 @@ std::optional<Mailbox> SourceParser::mailbox(const YAML::Node& node, Context con
         soe.pos = pos_of(*f->find("soe"));
         r_.optional_integer(*p, "channel_count", soe.channel_count);
         r_.optional_bool(*p, "drive_follows_bit3_support", soe.drive_follows_bit3_support);
-        if (const YAML::Node* n = p->find("init")) init_cmds(*n, Context::init_soe, names, soe.init_cmds, nullptr);
+        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_soe, names, soe.init_cmds, nullptr);
         extras(*p, "xml", soe.extras);
         m.soe = std::move(soe);
     }
@@ -314,7 +317,7 @@ std::optional<Mailbox> SourceParser::mailbox(const YAML::Node& node, Context con
         r_.optional_bool(*p, "ads_router", aoe.ads_router);
         r_.optional_bool(*p, "generate_own_net_id", aoe.generate_own_net_id);
         r_.optional_bool(*p, "initialize_own_net_id", aoe.initialize_own_net_id);
-        if (const YAML::Node* n = p->find("init")) init_cmds(*n, Context::init_aoe, names, aoe.init_cmds, nullptr);
+        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_aoe, names, aoe.init_cmds, nullptr);
         extras(*p, "xml", aoe.extras);
         m.aoe = std::move(aoe);
     }
@@ -330,7 +333,7 @@ std::optional<Mailbox> SourceParser::mailbox(const YAML::Node& node, Context con
     return m;
 }
 
-std::optional<PdoEntry> SourceParser::pdo_entry(const YAML::Node& node, const ObjectNames& names) {
+std::optional<PdoEntry> SourceParser::pdo_entry(const Node& node, const ObjectNames& names) {
     PdoEntry e;
     e.pos = pos_of(node);
     if (node.IsScalar()) {
@@ -361,7 +364,7 @@ std::optional<PdoEntry> SourceParser::pdo_entry(const YAML::Node& node, const Ob
         r_.error(f->node(), "yaml-missing-key", "a PDO entry needs either 'object' or 'pad'");
         return std::nullopt;
     }
-    if (const YAML::Node* n = f->find("pad")) {
+    if (const Node* n = f->find("pad")) {
         e.index = 0;
         e.bit_len = r_.integer<std::uint32_t>(*n, "pad", 1, 255).value_or(0);
         e.bit_len_pos = pos_of(*n);
@@ -372,7 +375,7 @@ std::optional<PdoEntry> SourceParser::pdo_entry(const YAML::Node& node, const Ob
         if (!ref) return std::nullopt;
         e.index = ref->index;
         e.subindex = ref->subindex;
-        if (const YAML::Node* n = f->find("subindex")) {
+        if (const Node* n = f->find("subindex")) {
             const auto sub = r_.integer<std::uint32_t>(*n, "subindex", 0, 255);
             if (sub && ref->subindex && *ref->subindex != *sub)
                 r_.error(*n, "yaml-conflict", "the sub-index is given twice ('object' and 'subindex') and differs");
@@ -385,14 +388,14 @@ std::optional<PdoEntry> SourceParser::pdo_entry(const YAML::Node& node, const Ob
             r_.error(*f->find("object"), "yaml-value", "index 0 is padding; write {pad: bits}");
             return std::nullopt;
         }
-        if (const YAML::Node* n = f->find("bit_len")) {
+        if (const Node* n = f->find("bit_len")) {
             e.bit_len = r_.integer<std::uint32_t>(*n, "bit_len", 1, 255).value_or(0);
             e.bit_len_pos = pos_of(*n);
         }
     }
     e.names = names_of(*f, "name");
     r_.optional_text(*f, "comment", e.comment);
-    if (const YAML::Node* n = f->find("data_type")) {
+    if (const Node* n = f->find("data_type")) {
         e.data_type = r_.text(*n, "data_type");
         e.data_type_pos = pos_of(*n);
     }
@@ -405,7 +408,7 @@ std::optional<PdoEntry> SourceParser::pdo_entry(const YAML::Node& node, const Ob
     return e;
 }
 
-std::vector<Pdo> SourceParser::pdos(const YAML::Node& node, PdoDirection direction, const ObjectNames& names, std::vector<bool>* assign) {
+std::vector<Pdo> SourceParser::pdos(const Node& node, PdoDirection direction, const ObjectNames& names, std::vector<bool>* assign) {
     std::vector<Pdo> out;
     const char* what = direction == PdoDirection::rx ? "rxpdo" : "txpdo";
     const auto items = r_.sequence(node, what);
@@ -431,13 +434,13 @@ std::vector<Pdo> SourceParser::pdos(const YAML::Node& node, PdoDirection directi
         r_.optional_bool(*f, "virtual", p.is_virtual);
         r_.optional_integer<std::uint32_t>(*f, "sm", p.sm, 0, 31);
         bool assigned = true;
-        if (const YAML::Node* n = f->find("assigned")) {
+        if (const Node* n = f->find("assigned")) {
             assigned = r_.boolean(*n, "assigned").value_or(true);
             if (!assigned && f->has("sm")) r_.error(*n, "yaml-conflict", "'assigned: false' contradicts 'sm'");
         }
         if (assign) assign->push_back(assigned);
         r_.optional_integer<std::uint32_t>(*f, "su", p.su, 0, 255);
-        if (const YAML::Node* n = f->find("exclude")) {
+        if (const Node* n = f->find("exclude")) {
             if (auto list = r_.sequence(*n, "exclude")) {
                 for (const auto& x : *list) {
                     PdoExclude ex;
@@ -457,7 +460,7 @@ std::vector<Pdo> SourceParser::pdos(const YAML::Node& node, PdoDirection directi
                 }
             }
         }
-        if (const YAML::Node* n = f->find("excluded_sms")) {
+        if (const Node* n = f->find("excluded_sms")) {
             if (auto list = r_.sequence(*n, "excluded_sms"))
                 for (const auto& x : *list)
                     if (auto v = r_.integer<std::uint32_t>(x, "excluded_sms", 0, 31)) p.excluded_sms.push_back(*v);
@@ -473,7 +476,7 @@ std::vector<Pdo> SourceParser::pdos(const YAML::Node& node, PdoDirection directi
         r_.optional_integer(*f, "safety_conn_number", p.safety_conn_number);
         r_.optional_bool(*f, "index_depend_on_slot", p.index_depend_on_slot);
         r_.optional_bool(*f, "index_depend_on_slot_group", p.index_depend_on_slot_group);
-        if (const YAML::Node* n = f->find("entries")) {
+        if (const Node* n = f->find("entries")) {
             if (auto list = r_.sequence(*n, "entries")) {
                 if (list->size() > 254) r_.error(*n, "yaml-value", "a PDO maps at most 254 entries");
                 for (const auto& x : *list)

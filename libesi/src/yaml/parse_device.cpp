@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include <yaml-cpp/yaml.h>
+
 #include "esi/lint/config.hpp"
 #include "esi/text_distance.hpp"
 #include "yaml/source_parser.hpp"
@@ -15,19 +17,49 @@ bool known_word(std::string_view word, std::span<const std::string_view> words) 
     return std::find(words.begin(), words.end(), word) != words.end();
 }
 
+// Byte offset of a 1-based line:column (columns count code points).
+std::size_t offset_of(const SourceText& source, SourcePos pos) {
+    if (pos.line == 0 || pos.line > source.line_count()) return source.text().size();
+    std::size_t at = source.line_start(pos.line);
+    const std::string& text = source.text();
+    for (std::uint32_t column = 1; column < pos.column && at < text.size() && text[at] != '\n'; ++column) {
+        ++at;
+        while (at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) ++at;
+    }
+    return at;
+}
+
 }  // namespace
 
-std::optional<Eeprom> SourceParser::eeprom(const YAML::Node& node) {
+// `limits:` is read by esi::parse_limits, shared with .esi-lint.yaml, which takes yaml-cpp nodes.
+// The subtree is handed to yaml-cpp as its own text, with everything before it blanked out so that
+// yaml-cpp's marks are the file's line:column.
+Limits SourceParser::limits(const Node& node) {
+    const std::size_t begin = offset_of(source_, node.pos());
+    const std::size_t end = std::max(begin, offset_of(source_, node.end_pos()));
+    std::string text;
+    text.reserve(end);
+    for (std::size_t i = 0; i < begin; ++i) text.push_back(source_.text()[i] == '\n' ? '\n' : ' ');
+    text.append(source_.text(), begin, end - begin);
+    try {
+        return parse_limits(YAML::Load(text), r_.path(), r_.diagnostics());
+    } catch (const YAML::Exception& e) {
+        r_.error(node, "yaml-syntax", "'limits' cannot be read on its own (aliases into it are not supported): " + e.msg);
+    }
+    return {};
+}
+
+std::optional<Eeprom> SourceParser::eeprom(const Node& node) {
     const auto f = r_.mapping(node, Context::eeprom, "eeprom");
     if (!f) return std::nullopt;
     Eeprom e;
     e.pos = f->pos();
-    if (const YAML::Node* n = f->find("size")) {
+    if (const Node* n = f->find("size")) {
         e.byte_size = r_.integer<std::uint32_t>(*n, "size", 128, 0x7FFFFFFF);
         e.byte_size_pos = pos_of(*n);
     }
-    if (const YAML::Node* n = f->find("config_data")) e.config_data = r_.hex(*n, "config_data");
-    if (const YAML::Node* n = f->find("boot_strap")) {
+    if (const Node* n = f->find("config_data")) e.config_data = r_.hex(*n, "config_data");
+    if (const Node* n = f->find("boot_strap")) {
         if (n->IsMap()) {
             // ETG.2000 BootStrap: 8 bytes, four little-endian words (out offset, out size, in offset, in size).
             const auto bf = r_.mapping(*n, Context::boot_strap, "boot_strap");
@@ -47,14 +79,14 @@ std::optional<Eeprom> SourceParser::eeprom(const YAML::Node& node) {
             e.boot_strap = h;
         }
     }
-    if (const YAML::Node* n = f->find("data")) {
+    if (const Node* n = f->find("data")) {
         e.data = r_.hex(*n, "data");
         for (const char* k : {"size", "config_data", "boot_strap"})
             if (f->has(k))
                 r_.error(*f->key_node(k), "yaml-conflict",
                          "'data' is a complete EEPROM image; it excludes '" + std::string(k) + "' (ETG.2000 Eeprom: Data or ByteSize/ConfigData/BootStrap)");
     }
-    if (const YAML::Node* n = f->find("categories")) {
+    if (const Node* n = f->find("categories")) {
         if (auto items = r_.sequence(*n, "categories")) {
             for (const auto& item : *items) {
                 const auto cf = r_.mapping(item, Context::eeprom_category, "a category");
@@ -65,7 +97,7 @@ std::optional<Eeprom> SourceParser::eeprom(const YAML::Node& node) {
                     c.cat_no = r_.integer<std::uint32_t>(*cf->find("number"), "number", 0, 0xFFFF).value_or(0);
                     c.cat_no_pos = pos_of(*cf->find("number"));
                 }
-                if (const YAML::Node* d = cf->find("data")) c.data = r_.hex(*d, "data");
+                if (const Node* d = cf->find("data")) c.data = r_.hex(*d, "data");
                 r_.optional_text(*cf, "data_string", c.data_string);
                 r_.optional_integer(*cf, "data_uint", c.data_uint);
                 r_.optional_integer(*cf, "data_udint", c.data_udint);
@@ -80,7 +112,7 @@ std::optional<Eeprom> SourceParser::eeprom(const YAML::Node& node) {
     return e;
 }
 
-std::vector<SyncManager> SourceParser::sync_managers(const YAML::Node& node, std::vector<SourcePos>& size_pos) {
+std::vector<SyncManager> SourceParser::sync_managers(const Node& node, std::vector<SourcePos>& size_pos) {
     static constexpr std::string_view types[] = {"MBoxOut", "MBoxIn", "Outputs", "Inputs"};
     std::vector<SyncManager> out;
     const auto items = r_.sequence(node, "sms");
@@ -91,7 +123,7 @@ std::vector<SyncManager> SourceParser::sync_managers(const YAML::Node& node, std
         SourcePos size_at;
         const auto f = r_.mapping(item, Context::sm, "an SM");
         if (f) {
-            if (const YAML::Node* n = f->find("type")) {
+            if (const Node* n = f->find("type")) {
                 sm.type = r_.text(*n, "type").value_or("");
                 if (!sm.type.empty() && !known_word(sm.type, types)) {
                     std::string message = "SM type '" + sm.type + "' is not MBoxOut, MBoxIn, Outputs or Inputs";
@@ -101,13 +133,13 @@ std::vector<SyncManager> SourceParser::sync_managers(const YAML::Node& node, std
             }
             r_.optional_integer<std::uint32_t>(*f, "address", sm.start_address, 0, 0xFFFF);
             r_.optional_integer<std::uint32_t>(*f, "control_byte", sm.control_byte, 0, 0xFF);
-            if (const YAML::Node* n = f->find("size")) {
+            if (const Node* n = f->find("size")) {
                 sm.default_size = r_.integer<std::uint32_t>(*n, "size", 0, 0xFFFF);
                 size_at = pos_of(*n);
             }
             r_.optional_integer<std::uint32_t>(*f, "min_size", sm.min_size, 0, 0xFFFF);
             r_.optional_integer<std::uint32_t>(*f, "max_size", sm.max_size, 0, 0xFFFF);
-            if (const YAML::Node* n = f->find("enable")) {
+            if (const Node* n = f->find("enable")) {
                 if (n->IsScalar() && (n->Scalar() == "true" || n->Scalar() == "false")) sm.enable = n->Scalar() == "true" ? 1u : 0u;
                 else sm.enable = r_.integer<std::uint32_t>(*n, "enable", 0, 0xFF);
             }
@@ -124,7 +156,7 @@ std::vector<SyncManager> SourceParser::sync_managers(const YAML::Node& node, std
     return out;
 }
 
-std::vector<Fmmu> SourceParser::fmmus(const YAML::Node& node) {
+std::vector<Fmmu> SourceParser::fmmus(const Node& node) {
     static constexpr std::string_view types[] = {"Outputs", "Inputs", "MBoxState", "DynamicInputs", "DynamicOutputs"};
     std::vector<Fmmu> out;
     const auto items = r_.sequence(node, "fmmus");
@@ -132,7 +164,7 @@ std::vector<Fmmu> SourceParser::fmmus(const YAML::Node& node) {
     for (const auto& item : *items) {
         Fmmu fm;
         fm.pos = pos_of(item);
-        const YAML::Node* type_node = nullptr;
+        const Node* type_node = nullptr;
         std::optional<Fields> f;
         if (item.IsScalar()) {
             type_node = &item;
@@ -158,7 +190,7 @@ std::vector<Fmmu> SourceParser::fmmus(const YAML::Node& node) {
     return out;
 }
 
-std::vector<SyncUnit> SourceParser::sync_units(const YAML::Node& node) {
+std::vector<SyncUnit> SourceParser::sync_units(const Node& node) {
     std::vector<SyncUnit> out;
     const auto items = r_.sequence(node, "sync_units");
     if (!items) return out;
@@ -167,7 +199,7 @@ std::vector<SyncUnit> SourceParser::sync_units(const YAML::Node& node) {
         if (!f) continue;
         SyncUnit su;
         su.pos = f->pos();
-        if (const YAML::Node* n = f->find("text")) su.text = r_.text(*n, "text").value_or("");
+        if (const Node* n = f->find("text")) su.text = r_.text(*n, "text").value_or("");
         r_.optional_bool(*f, "separate_su", su.separate_su);
         r_.optional_bool(*f, "separate_frame", su.separate_frame);
         r_.optional_bool(*f, "depend_on_input_state", su.depend_on_input_state);
@@ -178,7 +210,7 @@ std::vector<SyncUnit> SourceParser::sync_units(const YAML::Node& node) {
     return out;
 }
 
-std::optional<DcTime> SourceParser::dc_time(const YAML::Node& node, bool shift) {
+std::optional<DcTime> SourceParser::dc_time(const Node& node, bool shift) {
     DcTime t;
     t.pos = pos_of(node);
     if (node.IsScalar()) {
@@ -187,9 +219,9 @@ std::optional<DcTime> SourceParser::dc_time(const YAML::Node& node, bool shift) 
     }
     const auto f = r_.mapping(node, Context::dc_time, "a DC time");
     if (!f) return std::nullopt;
-    if (const YAML::Node* n = f->find("value")) t.value = r_.integer<std::int64_t>(*n, "value").value_or(0);
+    if (const Node* n = f->find("value")) t.value = r_.integer<std::int64_t>(*n, "value").value_or(0);
     r_.optional_integer(*f, "factor", t.factor);
-    if (const YAML::Node* n = f->find("input")) {
+    if (const Node* n = f->find("input")) {
         if (!shift) r_.error(*f->key_node("input"), "yaml-value", "'input' applies to shift times only");
         t.input = r_.boolean(*n, "input");
     }
@@ -198,16 +230,16 @@ std::optional<DcTime> SourceParser::dc_time(const YAML::Node& node, bool shift) 
     return t;
 }
 
-std::optional<Dc> SourceParser::dc(const YAML::Node& node) {
+std::optional<Dc> SourceParser::dc(const Node& node) {
     Dc dc;
     dc.pos = pos_of(node);
-    YAML::Node modes;
+    Node modes;
     if (node.IsSequence()) {
         modes = node;
     } else {
         const auto f = r_.mapping(node, Context::dc, "dc");
         if (!f) return std::nullopt;
-        if (const YAML::Node* n = f->find("op_modes")) modes = *n;
+        if (const Node* n = f->find("op_modes")) modes = *n;
         r_.optional_bool(*f, "unknown_frmw", dc.unknown_frmw);
         r_.optional_bool(*f, "unknown_64bit", dc.unknown_64bit);
         r_.optional_bool(*f, "external_ref_clock", dc.external_ref_clock);
@@ -224,17 +256,17 @@ std::optional<Dc> SourceParser::dc(const YAML::Node& node) {
                 m.pos = f->pos();
                 if (r_.require(*f, "name", "a DC op mode")) m.name = r_.text(*f->find("name"), "name").value_or("");
                 r_.optional_text(*f, "description", m.desc);
-                if (const YAML::Node* n = f->find("assign_activate")) {
+                if (const Node* n = f->find("assign_activate")) {
                     m.assign_activate_pos = pos_of(*n);
                     if (auto v = r_.integer<std::uint32_t>(*n, "assign_activate", 0, 0xFFFF)) {
                         m.assign_activate = *v;
                         m.has_assign_activate = true;
                     }
                 }
-                if (const YAML::Node* n = f->find("cycle_time_sync0")) m.cycle_time_sync0 = dc_time(*n, false);
-                if (const YAML::Node* n = f->find("shift_time_sync0")) m.shift_time_sync0 = dc_time(*n, true);
-                if (const YAML::Node* n = f->find("cycle_time_sync1")) m.cycle_time_sync1 = dc_time(*n, false);
-                if (const YAML::Node* n = f->find("shift_time_sync1")) m.shift_time_sync1 = dc_time(*n, true);
+                if (const Node* n = f->find("cycle_time_sync0")) m.cycle_time_sync0 = dc_time(*n, false);
+                if (const Node* n = f->find("shift_time_sync0")) m.shift_time_sync0 = dc_time(*n, true);
+                if (const Node* n = f->find("cycle_time_sync1")) m.cycle_time_sync1 = dc_time(*n, false);
+                if (const Node* n = f->find("shift_time_sync1")) m.shift_time_sync1 = dc_time(*n, true);
                 extras(*f, "xml", m.extras);
                 dc.op_modes.push_back(std::move(m));
             }
@@ -243,7 +275,7 @@ std::optional<Dc> SourceParser::dc(const YAML::Node& node) {
     return dc;
 }
 
-std::optional<ParsedDevice> SourceParser::device(const YAML::Node& node, std::optional<std::uint32_t> vendor_id,
+std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional<std::uint32_t> vendor_id,
                                                  const std::vector<ParsedModule>& modules, std::size_t group_count,
                                                  const std::string* only_group) {
     const auto f = r_.mapping(node, Context::device, "a device");
@@ -268,7 +300,7 @@ std::optional<ParsedDevice> SourceParser::device(const YAML::Node& node, std::op
     if (r_.require(*f, "name", "a device")) d.names = names_of(*f, "name");
     d.comments = names_of(*f, "comment");
     d.urls = names_of(*f, "url");
-    if (const YAML::Node* n = f->find("group")) {
+    if (const Node* n = f->find("group")) {
         d.group_type = r_.text(*n, "group");
         d.group_type_pos = pos_of(*n);
     } else if (group_count == 1 && only_group) {
@@ -280,7 +312,7 @@ std::optional<ParsedDevice> SourceParser::device(const YAML::Node& node, std::op
                                   : "a device needs 'group' when several groups are declared");
     }
     // Two MII ports is the usual device; an E-Bus terminal writes "KK" (prior-art §4.3 S13).
-    if (const YAML::Node* n = f->find("physics")) {
+    if (const Node* n = f->find("physics")) {
         d.physics = r_.text(*n, "physics").value_or("");
         for (char c : d.physics)
             if (c != 'Y' && c != 'H' && c != 'K' && c != ' ') {
@@ -295,7 +327,7 @@ std::optional<ParsedDevice> SourceParser::device(const YAML::Node& node, std::op
     images(*f, d.images);
 
     // Profile and object dictionary.
-    if (const YAML::Node* n = f->find("profile")) {
+    if (const Node* n = f->find("profile")) {
         if (n->IsSequence()) {
             for (const auto& p : *n)
                 if (auto profile_value = profile(p)) d.profiles.push_back(std::move(*profile_value));
@@ -316,19 +348,19 @@ std::optional<ParsedDevice> SourceParser::device(const YAML::Node& node, std::op
         d.profiles.front().dictionary = std::move(dict);
     }
 
-    if (const YAML::Node* n = f->find("mailbox")) d.mailbox = mailbox(*n, Context::mailbox, &intent.mailbox, names, nullptr);
-    if (const YAML::Node* n = f->find("init")) {
+    if (const Node* n = f->find("mailbox")) d.mailbox = mailbox(*n, Context::mailbox, &intent.mailbox, names, nullptr);
+    if (const Node* n = f->find("init")) {
         if (!d.mailbox || !d.mailbox->coe) {
             r_.error(*f->key_node("init"), "yaml-missing-key", "'init' holds CoE InitCmds; the device needs 'mailbox: {coe: …}'");
         } else {
             init_cmds(*n, Context::init_coe, names, d.mailbox->coe->init_cmds, &intent.init_values);
         }
     }
-    if (const YAML::Node* n = f->find("sms")) d.sms = sync_managers(*n, intent.sm_size_pos);
-    if (const YAML::Node* n = f->find("fmmus")) d.fmmus = fmmus(*n);
-    if (const YAML::Node* n = f->find("sync_units")) d.sus = sync_units(*n);
-    if (const YAML::Node* n = f->find("rxpdo")) d.rx_pdos = pdos(*n, PdoDirection::rx, names, &intent.rx_assign);
-    if (const YAML::Node* n = f->find("txpdo")) d.tx_pdos = pdos(*n, PdoDirection::tx, names, &intent.tx_assign);
+    if (const Node* n = f->find("sms")) d.sms = sync_managers(*n, intent.sm_size_pos);
+    if (const Node* n = f->find("fmmus")) d.fmmus = fmmus(*n);
+    if (const Node* n = f->find("sync_units")) d.sus = sync_units(*n);
+    if (const Node* n = f->find("rxpdo")) d.rx_pdos = pdos(*n, PdoDirection::rx, names, &intent.rx_assign);
+    if (const Node* n = f->find("txpdo")) d.tx_pdos = pdos(*n, PdoDirection::tx, names, &intent.tx_assign);
     {
         // An index is one PDO, whatever its direction.
         std::map<std::uint32_t, SourcePos> rx;
@@ -339,14 +371,14 @@ std::optional<ParsedDevice> SourceParser::device(const YAML::Node& node, std::op
                 diag.notes.push_back({r_.path(), it->second, "the RxPDO"});
             }
     }
-    if (const YAML::Node* n = f->find("dc")) d.dc = dc(*n);
-    if (const YAML::Node* n = f->find("slots")) d.slots = slots(*n, modules);
-    if (const YAML::Node* n = f->find("eeprom")) d.eeprom = eeprom(*n);
-    if (const YAML::Node* n = f->find("limits")) {
-        out.limits = parse_limits(*n, r_.path(), r_.diagnostics());
+    if (const Node* n = f->find("dc")) d.dc = dc(*n);
+    if (const Node* n = f->find("slots")) d.slots = slots(*n, modules);
+    if (const Node* n = f->find("eeprom")) d.eeprom = eeprom(*n);
+    if (const Node* n = f->find("limits")) {
+        out.limits = limits(*n);
         intent.limits = *out.limits;
     }
-    if (const YAML::Node* n = f->find("derive")) intent.options = derive_options(*n, false);
+    if (const Node* n = f->find("derive")) intent.options = derive_options(*n, false);
     extras(*f, "xml", d.extras);
     return out;
 }

@@ -53,7 +53,7 @@ std::optional<ObjectFlags> SourceParser::flags(const Fields& f) {
     for (auto k : flag_keys) any = any || f.has(k);
     if (!any) return std::nullopt;
     flags.pos = f.pos();
-    if (const YAML::Node* n = f.find("access")) {
+    if (const Node* n = f.find("access")) {
         if (auto a = r_.text(*n, "access")) {
             if (*a == "ro" || *a == "rw" || *a == "wo") flags.access = *a;
             else r_.error(*n, "yaml-value", "'access' is ro, rw or wo, not '" + *a + "'");
@@ -61,7 +61,7 @@ std::optional<ObjectFlags> SourceParser::flags(const Fields& f) {
     }
     r_.optional_text(f, "read_restrictions", flags.access_read_restrictions);
     r_.optional_text(f, "write_restrictions", flags.access_write_restrictions);
-    if (const YAML::Node* n = f.find("pdo")) {
+    if (const Node* n = f.find("pdo")) {
         if (auto p = r_.text(*n, "pdo")) {
             static const std::pair<std::string_view, std::string_view> spellings[] = {
                 {"rx", "R"}, {"tx", "T"}, {"rxtx", "RT"}, {"txrx", "TR"}, {"R", "R"}, {"T", "T"}, {"RT", "RT"},
@@ -76,7 +76,7 @@ std::optional<ObjectFlags> SourceParser::flags(const Fields& f) {
                 r_.error(*n, "yaml-value", "'pdo' is rx, tx, rxtx or none (which PDOs may map the object), not '" + *p + "'");
         }
     }
-    if (const YAML::Node* n = f.find("category")) {
+    if (const Node* n = f.find("category")) {
         if (auto c = r_.text(*n, "category")) {
             if (*c == "m" || *c == "o" || *c == "c") flags.category = *c;
             else r_.error(*n, "yaml-value", "'category' is m (mandatory), o (optional) or c (conditional), not '" + *c + "'");
@@ -92,7 +92,7 @@ std::optional<ObjectFlags> SourceParser::flags(const Fields& f) {
     return flags;
 }
 
-std::optional<Number> SourceParser::typed_integer(const YAML::Node& node, const Dictionary& dictionary, const std::string& type_name,
+std::optional<Number> SourceParser::typed_integer(const Node& node, const Dictionary& dictionary, const std::string& type_name,
                                                   std::string_view what) {
     const auto v = r_.scalar_value(node, what);
     if (!v) return std::nullopt;
@@ -115,7 +115,7 @@ std::optional<ObjectInfo> SourceParser::info(const Fields& f, const Dictionary& 
     const bool text = type.basic && type.basic->type_class == TypeClass::visible_string;
 
     auto typed = [&](std::string_view key, std::optional<Number>& number, std::optional<HexData>& data, std::optional<std::string>* str) {
-        const YAML::Node* n = f.find(key);
+        const Node* n = f.find(key);
         if (!n) return;
         if (integer) {
             number = typed_integer(*n, dictionary, type_name, key);
@@ -143,7 +143,7 @@ std::optional<ObjectInfo> SourceParser::info(const Fields& f, const Dictionary& 
     typed("min", info.min_value, info.min_data, nullptr);
     typed("max", info.max_value, info.max_data, nullptr);
     auto raw = [&](std::string_view key, std::string_view typed_key, std::optional<HexData>& data) {
-        const YAML::Node* n = f.find(key);
+        const Node* n = f.find(key);
         if (!n) return;
         if (f.has(typed_key))
             r_.error(*f.key_node(key), "yaml-conflict",
@@ -153,7 +153,7 @@ std::optional<ObjectInfo> SourceParser::info(const Fields& f, const Dictionary& 
     raw("default_data", "default", info.default_data);
     raw("min_data", "min", info.min_data);
     raw("max_data", "max", info.max_data);
-    if (const YAML::Node* n = f.find("default_string")) {
+    if (const Node* n = f.find("default_string")) {
         if (f.has("default") || f.has("default_data"))
             r_.error(*f.key_node("default_string"), "yaml-conflict", "give one of 'default', 'default_data' and 'default_string'");
         info.default_string = r_.text(*n, "default_string");
@@ -164,7 +164,7 @@ std::optional<ObjectInfo> SourceParser::info(const Fields& f, const Dictionary& 
     return info;
 }
 
-std::optional<DataType> SourceParser::data_type(const YAML::Node& node) {
+std::optional<DataType> SourceParser::data_type(const Node& node) {
     const auto f = r_.mapping(node, Context::data_type, "a data type");
     if (!f) return std::nullopt;
     DataType t;
@@ -174,10 +174,10 @@ std::optional<DataType> SourceParser::data_type(const YAML::Node& node) {
     t.name_pos = pos_of(*f->find("name"));
     r_.optional_integer<std::uint32_t>(*f, "index", t.index, 0, 0xFFFF);
     r_.optional_text(*f, "base_type", t.base_type);
-    if (const YAML::Node* n = f->find("bit_size")) t.bit_size = r_.integer<std::uint64_t>(*n, "bit_size", 0, 0xFFFFFFFF).value_or(0);
+    if (const Node* n = f->find("bit_size")) t.bit_size = r_.integer<std::uint64_t>(*n, "bit_size", 0, 0xFFFFFFFF).value_or(0);
     t.comments = names_of(*f, "comment");
-    if (const YAML::Node* n = f->find("array")) {
-        std::vector<YAML::Node> dims;
+    if (const Node* n = f->find("array")) {
+        std::vector<Node> dims;
         if (n->IsSequence())
             for (const auto& d : *n) dims.push_back(d);
         else
@@ -188,11 +188,11 @@ std::optional<DataType> SourceParser::data_type(const YAML::Node& node) {
             ArrayInfo ai;
             ai.pos = af->pos();
             ai.elements = r_.integer<std::int64_t>(*af->find("elements"), "elements", 0, 0xFFFF).value_or(0);
-            if (const YAML::Node* lb = af->find("lower_bound")) ai.lower_bound = r_.integer<std::int64_t>(*lb, "lower_bound", 0, 0xFFFF).value_or(0);
+            if (const Node* lb = af->find("lower_bound")) ai.lower_bound = r_.integer<std::int64_t>(*lb, "lower_bound", 0, 0xFFFF).value_or(0);
             t.array_info.push_back(ai);
         }
     }
-    if (const YAML::Node* n = f->find("sub_items")) {
+    if (const Node* n = f->find("sub_items")) {
         if (auto items = r_.sequence(*n, "sub_items")) {
             Dictionary scratch;  // sub-item values are typed by basic types or types declared before this one
             std::uint64_t offset = 0;
@@ -206,20 +206,20 @@ std::optional<DataType> SourceParser::data_type(const YAML::Node& node) {
                 if (r_.require(*sf, "type", "a sub-item")) s.type = r_.text(*sf->find("type"), "type").value_or("");
                 s.display_names = names_of(*sf, "display_name");
                 s.comments = names_of(*sf, "comment");
-                if (const YAML::Node* b = sf->find("bit_size")) s.bit_size = r_.integer<std::uint64_t>(*b, "bit_size", 1, 0xFFFFFFFF).value_or(0);
+                if (const Node* b = sf->find("bit_size")) s.bit_size = r_.integer<std::uint64_t>(*b, "bit_size", 1, 0xFFFFFFFF).value_or(0);
                 else s.bit_size = implied_bit_size(s.type).value_or(0);
-                if (const YAML::Node* b = sf->find("bit_offset")) s.bit_offset = r_.integer<std::uint64_t>(*b, "bit_offset", 0, 0xFFFFFFFF).value_or(0);
+                if (const Node* b = sf->find("bit_offset")) s.bit_offset = r_.integer<std::uint64_t>(*b, "bit_offset", 0, 0xFFFFFFFF).value_or(0);
                 else s.bit_offset = offset;
                 offset = s.bit_offset + s.bit_size;
                 const ValueType vt = value_type_of(scratch, s.type);
-                if (const YAML::Node* d = sf->find("default")) {
+                if (const Node* d = sf->find("default")) {
                     if (vt.basic && vt.basic->type_class == TypeClass::visible_string) s.default_string = r_.text(*d, "default");
                     else s.default_value = typed_integer(*d, scratch, s.type, "default");
                 }
-                if (const YAML::Node* d = sf->find("min")) s.min_value = typed_integer(*d, scratch, s.type, "min");
-                if (const YAML::Node* d = sf->find("max")) s.max_value = typed_integer(*d, scratch, s.type, "max");
-                if (const YAML::Node* d = sf->find("default_data")) s.default_data = r_.hex(*d, "default_data");
-                if (const YAML::Node* d = sf->find("default_string")) s.default_string = r_.text(*d, "default_string");
+                if (const Node* d = sf->find("min")) s.min_value = typed_integer(*d, scratch, s.type, "min");
+                if (const Node* d = sf->find("max")) s.max_value = typed_integer(*d, scratch, s.type, "max");
+                if (const Node* d = sf->find("default_data")) s.default_data = r_.hex(*d, "default_data");
+                if (const Node* d = sf->find("default_string")) s.default_string = r_.text(*d, "default_string");
                 s.flags = flags(*sf);
                 extras(*sf, "xml", s.extras);
                 t.sub_items.push_back(std::move(s));
@@ -227,7 +227,7 @@ std::optional<DataType> SourceParser::data_type(const YAML::Node& node) {
             if (t.bit_size == 0 && !f->has("bit_size")) t.bit_size = (offset + 7) / 8 * 8;
         }
     }
-    if (const YAML::Node* n = f->find("enum")) {
+    if (const Node* n = f->find("enum")) {
         if (!n->IsMap()) {
             r_.error(*n, "yaml-type", "'enum' maps values to texts: {0: Off, 1: On}");
         } else {
@@ -262,7 +262,7 @@ std::optional<DataType> SourceParser::data_type(const YAML::Node& node) {
     return t;
 }
 
-void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictionary& dictionary,
+void SourceParser::object(const Node& key, const Node& value, Dictionary& dictionary,
                           std::map<std::uint32_t, std::pair<SourcePos, std::string>>& seen) {
     Object o;
     o.pos = o.index_pos = pos_of(key);
@@ -284,7 +284,7 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
     o.comments = names_of(*f, "comment");
     o.flags = flags(*f);
     std::string type;
-    if (const YAML::Node* n = f->find("type")) {
+    if (const Node* n = f->find("type")) {
         type = r_.text(*n, "type").value_or("");
         o.type_pos = pos_of(*n);
     }
@@ -308,7 +308,7 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
         if (!r_.require(*f, "type", what + " (an ARRAY names its element type)") || !count) return;
         std::vector<std::optional<ObjectInfo>> infos(*count + 1u);
         std::vector<std::string> element_names(*count + 1u);
-        if (const YAML::Node* n = f->find("entries")) {
+        if (const Node* n = f->find("entries")) {
             if (!n->IsMap()) {
                 r_.error(*n, "yaml-type", "'entries' maps sub-indices to their values: {1: {default: 0x1600}}");
             } else {
@@ -319,8 +319,8 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
                     for (const auto& item : ef->items())
                         if (item.key != "name" && std::find(std::begin(info_keys), std::end(info_keys), item.key) == std::end(info_keys))
                             r_.error(item.key_node, "yaml-conflict",
-                                     "array elements share the array's type and flags; '" + item.key + "' cannot differ per element");
-                    if (const YAML::Node* nm = ef->find("name")) element_names[*sub] = r_.text(*nm, "name").value_or("");
+                                     "array elements share the array's type and flags; '" + std::string(item.key) + "' cannot differ per element");
+                    if (const Node* nm = ef->find("name")) element_names[*sub] = r_.text(*nm, "name").value_or("");
                     infos[*sub] = info(*ef, dictionary, *sub == 0 ? std::string("USINT") : type, "an array element");
                 }
             }
@@ -328,7 +328,7 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
         const std::string type_name = unique_type_name(dictionary, type_name_for(o.index));
         error = build_array(dictionary, o, type_name, type, *count, std::move(infos), o.flags, o.flags, std::move(element_names));
     } else if (has_entries) {
-        const YAML::Node& entries = *f->find("entries");
+        const Node& entries = *f->find("entries");
         if (!entries.IsMap()) {
             r_.error(entries, "yaml-type", "'entries' maps sub-indices to sub-entries: {1: {name: Kp, type: REAL}}");
             return;
@@ -358,7 +358,7 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
                 for (const auto& field : ef->items())
                     if (std::find(std::begin(info_keys), std::end(info_keys), field.key) == std::end(info_keys))
                         r_.error(field.key_node, "yaml-conflict",
-                                 "'" + field.key + "' is defined by the data type '" + type + "'; entries of such an object give values only");
+                                 "'" + std::string(field.key) + "' is defined by the data type '" + type + "'; entries of such an object give values only");
                 ObjectSubItemInfo si;
                 si.name = le->name;
                 si.pos = ef->pos();
@@ -382,8 +382,8 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
                 if (r_.require(*ef, "name", "an entry")) e.item.name = r_.text(*ef->find("name"), "name").value_or("");
                 if (r_.require(*ef, "type", "an entry")) e.item.type = r_.text(*ef->find("type"), "type").value_or("");
                 e.item.comments = names_of(*ef, "comment");
-                if (const YAML::Node* b = ef->find("bit_size")) e.item.bit_size = r_.integer<std::uint64_t>(*b, "bit_size", 1, 0xFFFF).value_or(0);
-                if (const YAML::Node* b = ef->find("bit_offset")) {
+                if (const Node* b = ef->find("bit_size")) e.item.bit_size = r_.integer<std::uint64_t>(*b, "bit_size", 1, 0xFFFF).value_or(0);
+                if (const Node* b = ef->find("bit_offset")) {
                     e.item.bit_offset = r_.integer<std::uint64_t>(*b, "bit_offset", 0, 0xFFFF).value_or(0);
                     e.explicit_offset = true;
                 }
@@ -421,7 +421,7 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
             t.base_type = type;
             t.bit_size = bits;
             t.pos = t.name_pos = pos_of(*f->find("enum"));
-            const YAML::Node& en = *f->find("enum");
+            const Node& en = *f->find("enum");
             if (!en.IsMap()) {
                 r_.error(en, "yaml-type", "'enum' maps values to texts: {0: Off, 1: On}");
                 return;
@@ -444,7 +444,7 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
             type = dictionary.data_types.back().name;
         }
         o.type = type;
-        if (const YAML::Node* n = f->find("bit_size")) {
+        if (const Node* n = f->find("bit_size")) {
             o.bit_size = r_.integer<std::uint64_t>(*n, "bit_size", 1, 0xFFFFFFFF).value_or(0);
             o.bit_size_pos = pos_of(*n);
         } else {
@@ -460,16 +460,16 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
         r_.error(o.pos, "yaml-value", what + ": " + error);
         return;
     }
-    if (const YAML::Node* n = f->find("info_xml"); n && (is_array || has_entries)) {
+    if (const Node* n = f->find("info_xml"); n && (is_array || has_entries)) {
         if (!o.info) o.info = ObjectInfo{};
         read_extras(r_, *n, o.info->extras, "info_xml");
     }
     if (is_array || has_entries) {
-        if (const YAML::Node* n = f->find("display_name")) {
+        if (const Node* n = f->find("display_name")) {
             if (!o.info) o.info = ObjectInfo{};
             o.info->display_name = r_.text(*n, "display_name");
         }
-        if (const YAML::Node* n = f->find("unit")) {
+        if (const Node* n = f->find("unit")) {
             if (!o.info) o.info = ObjectInfo{};
             o.info->unit = r_.integer<std::uint32_t>(*n, "unit");
         }
@@ -479,7 +479,7 @@ void SourceParser::object(const YAML::Node& key, const YAML::Node& value, Dictio
 }
 
 ObjectNames SourceParser::dictionary(const Fields& f, Dictionary& dictionary) {
-    if (const YAML::Node* n = f.find("data_types")) {
+    if (const Node* n = f.find("data_types")) {
         if (auto items = r_.sequence(*n, "data_types")) {
             for (const auto& item : *items) {
                 auto t = data_type(item);
@@ -493,11 +493,12 @@ ObjectNames SourceParser::dictionary(const Fields& f, Dictionary& dictionary) {
             }
         }
     }
-    if (const YAML::Node* n = f.find("objects")) {
+    if (const Node* n = f.find("objects")) {
         if (!n->IsMap()) {
             r_.error(*n, "yaml-type", "'objects' maps object indices to objects: {0x6040: {name: Controlword, type: UINT}}");
         } else {
             std::map<std::uint32_t, std::pair<SourcePos, std::string>> seen;
+            dictionary.objects.reserve(dictionary.objects.size() + n->size() + 64);  // room for the derived ones
             for (auto it = n->begin(); it != n->end(); ++it) object(it->first, it->second, dictionary, seen);
         }
     }

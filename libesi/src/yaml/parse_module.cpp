@@ -8,7 +8,7 @@
 
 namespace esi::yaml {
 
-std::optional<ParsedModule> SourceParser::module(const YAML::Node& node) {
+std::optional<ParsedModule> SourceParser::module(const Node& node) {
     const auto f = r_.mapping(node, Context::module, "a module");
     if (!f) return std::nullopt;
     ParsedModule out;
@@ -24,7 +24,7 @@ std::optional<ParsedModule> SourceParser::module(const YAML::Node& node) {
     extras(*f, "type_xml", m.type_extras);
     if (r_.require(*f, "name", "a module")) m.names = names_of(*f, "name");
     images(*f, m.images);
-    if (const YAML::Node* n = f->find("profile")) m.profile = profile(*n);
+    if (const Node* n = f->find("profile")) m.profile = profile(*n);
     ObjectNames names;
     if (f->has("objects") || f->has("data_types") || f->has("dictionary_xml")) {
         if (!m.profile) {
@@ -37,22 +37,22 @@ std::optional<ParsedModule> SourceParser::module(const YAML::Node& node) {
         names = dictionary(*f, dict);
         m.profile->dictionary = std::move(dict);
     }
-    if (const YAML::Node* n = f->find("mailbox")) m.mailbox = mailbox(*n, Context::module_mailbox, nullptr, names, nullptr);
-    if (const YAML::Node* n = f->find("init")) {
+    if (const Node* n = f->find("mailbox")) m.mailbox = mailbox(*n, Context::module_mailbox, nullptr, names, nullptr);
+    if (const Node* n = f->find("init")) {
         if (!m.mailbox || !m.mailbox->coe)
             r_.error(*f->key_node("init"), "yaml-missing-key", "'init' holds CoE InitCmds; the module needs 'mailbox: {coe: …}'");
         else
             init_cmds(*n, Context::init_coe, names, m.mailbox->coe->init_cmds, &out.intent.init_values);
     }
-    if (const YAML::Node* n = f->find("rxpdo")) m.rx_pdos = pdos(*n, PdoDirection::rx, names, &out.intent.rx_assign);
-    if (const YAML::Node* n = f->find("txpdo")) m.tx_pdos = pdos(*n, PdoDirection::tx, names, &out.intent.tx_assign);
+    if (const Node* n = f->find("rxpdo")) m.rx_pdos = pdos(*n, PdoDirection::rx, names, &out.intent.rx_assign);
+    if (const Node* n = f->find("txpdo")) m.tx_pdos = pdos(*n, PdoDirection::tx, names, &out.intent.tx_assign);
     r_.optional_text(*f, "dc_op_mode", m.dc_op_mode_name);
-    if (const YAML::Node* n = f->find("derive")) out.intent.options = derive_options(*n, true);
+    if (const Node* n = f->find("derive")) out.intent.options = derive_options(*n, true);
     extras(*f, "xml", m.extras);
     return out;
 }
 
-std::optional<std::uint32_t> SourceParser::module_ident(const YAML::Node& node, const std::vector<ParsedModule>& modules,
+std::optional<std::uint32_t> SourceParser::module_ident(const Node& node, const std::vector<ParsedModule>& modules,
                                                         std::string_view what) {
     if (!node.IsScalar()) {
         r_.error(node, "yaml-type", "'" + std::string(what) + "' names a module by its type or its ident");
@@ -71,16 +71,16 @@ std::optional<std::uint32_t> SourceParser::module_ident(const YAML::Node& node, 
     return std::nullopt;
 }
 
-std::optional<Slots> SourceParser::slots(const YAML::Node& node, const std::vector<ParsedModule>& modules) {
+std::optional<Slots> SourceParser::slots(const Node& node, const std::vector<ParsedModule>& modules) {
     Slots s;
     s.pos = pos_of(node);
-    YAML::Node list;
+    Node list;
     if (node.IsSequence()) {
         list = node;
     } else {
         const auto f = r_.mapping(node, Context::slots, "slots");
         if (!f) return std::nullopt;
-        if (const YAML::Node* n = f->find("list")) list = *n;
+        if (const Node* n = f->find("list")) list = *n;
         r_.optional_integer(*f, "max_slot_count", s.max_slot_count);
         r_.optional_integer(*f, "max_slot_group_count", s.max_slot_group_count);
         r_.optional_integer(*f, "slot_pdo_increment", s.slot_pdo_increment);
@@ -98,7 +98,7 @@ std::optional<Slots> SourceParser::slots(const YAML::Node& node, const std::vect
         Slot slot;
         slot.pos = f->pos();
         slot.names = names_of(*f, "name");
-        if (const YAML::Node* n = f->find("modules")) {
+        if (const Node* n = f->find("modules")) {
             if (auto ms = r_.sequence(*n, "modules")) {
                 for (const auto& m : *ms) {
                     SlotModuleIdent id;
@@ -109,7 +109,7 @@ std::optional<Slots> SourceParser::slots(const YAML::Node& node, const std::vect
                         auto v = module_ident(*mf->find("module"), modules, "module");
                         if (!v) continue;
                         id.value = *v;
-                        if (const YAML::Node* dn = mf->find("default")) id.default_ident = module_ident(*dn, modules, "default");
+                        if (const Node* dn = mf->find("default")) id.default_ident = module_ident(*dn, modules, "default");
                     } else {
                         auto v = module_ident(m, modules, "modules");
                         if (!v) continue;
@@ -119,7 +119,7 @@ std::optional<Slots> SourceParser::slots(const YAML::Node& node, const std::vect
                 }
             }
         }
-        if (const YAML::Node* n = f->find("module_classes")) {
+        if (const Node* n = f->find("module_classes")) {
             if (auto mcs = r_.sequence(*n, "module_classes")) {
                 for (const auto& mc : *mcs) {
                     const auto cf = r_.mapping(mc, Context::slot_module_class, "a module class");
@@ -136,14 +136,14 @@ std::optional<Slots> SourceParser::slots(const YAML::Node& node, const std::vect
         }
         if (slot.module_idents.empty() == slot.module_classes.empty())
             r_.error(f->node(), "yaml-missing-key", "a slot lists either 'modules' or 'module_classes' (ETG.2000 SlotType)");
-        if (const YAML::Node* n = f->find("default")) slot.default_ident = module_ident(*n, modules, "default");
-        if (const YAML::Node* n = f->find("fallback")) slot.fallback = module_ident(*n, modules, "fallback");
+        if (const Node* n = f->find("default")) slot.default_ident = module_ident(*n, modules, "default");
+        if (const Node* n = f->find("fallback")) slot.fallback = module_ident(*n, modules, "fallback");
         r_.optional_integer(*f, "slot_group", slot.slot_group);
         // A slot without counts takes at most one module and may stay empty.
         slot.min_instances = 0;
         slot.max_instances = 1;
-        if (const YAML::Node* n = f->find("min_instances")) slot.min_instances = r_.integer<std::uint32_t>(*n, "min_instances").value_or(0);
-        if (const YAML::Node* n = f->find("max_instances")) slot.max_instances = r_.integer<std::uint32_t>(*n, "max_instances").value_or(1);
+        if (const Node* n = f->find("min_instances")) slot.min_instances = r_.integer<std::uint32_t>(*n, "min_instances").value_or(0);
+        if (const Node* n = f->find("max_instances")) slot.max_instances = r_.integer<std::uint32_t>(*n, "max_instances").value_or(1);
         if (slot.min_instances > slot.max_instances)
             r_.error(f->node(), "yaml-value", "'min_instances' is larger than 'max_instances'");
         r_.optional_integer(*f, "slot_pdo_increment", slot.slot_pdo_increment);

@@ -1,5 +1,5 @@
-// load_device_source(): bytes -> bounded pre-scan -> yaml-cpp tree -> model -> derivation.
-// The input is bounded three ways before any tree is walked (size, nesting depth, nodes after
+// load_device_source(): bytes -> bounded tree (libyaml events) -> model -> derivation.
+// The input is bounded three ways while the tree is built (size, nesting depth, nodes after
 // alias expansion), so hostile input fails fast with a located message; nothing throws across
 // the API, and nothing is returned as a document when there are errors.
 
@@ -10,14 +10,14 @@
 #include "esi/derive/derive.hpp"
 #include "esi/xml/reader.hpp"
 #include "yaml/extras.hpp"
-#include "yaml/prescan.hpp"
+#include "yaml/tree.hpp"
 #include "yaml/source_parser.hpp"
 
 namespace esi {
 
 namespace yaml {
 
-std::optional<Vendor> SourceParser::vendor(const YAML::Node& node) {
+std::optional<Vendor> SourceParser::vendor(const Node& node) {
     const auto f = r_.mapping(node, Context::vendor, "vendor");
     if (!f) return std::nullopt;
     Vendor v;
@@ -37,7 +37,7 @@ std::optional<Vendor> SourceParser::vendor(const YAML::Node& node) {
     return v;
 }
 
-std::optional<Group> SourceParser::group(const YAML::Node& node) {
+std::optional<Group> SourceParser::group(const Node& node) {
     const auto f = r_.mapping(node, Context::group, "a group");
     if (!f) return std::nullopt;
     Group g;
@@ -55,7 +55,7 @@ std::optional<Group> SourceParser::group(const YAML::Node& node) {
     return g;
 }
 
-std::optional<EtherCATInfo> SourceParser::parse(const YAML::Node& root, std::vector<ParsedDevice>& devices,
+std::optional<EtherCATInfo> SourceParser::parse(const Node& root, std::vector<ParsedDevice>& devices,
                                                 std::vector<ParsedModule>& modules) {
     const auto f = r_.mapping(root, Context::root, "the device source");
     if (!f) return std::nullopt;
@@ -65,7 +65,7 @@ std::optional<EtherCATInfo> SourceParser::parse(const YAML::Node& root, std::vec
     info.descriptions_pos = info.pos;
     r_.optional_text(*f, "esi_version", info.version);
     if (r_.require(*f, "vendor", "the device source")) info.vendor = vendor(*f->find("vendor"));
-    if (const YAML::Node* n = f->find("groups")) {
+    if (const Node* n = f->find("groups")) {
         if (auto items = r_.sequence(*n, "groups")) {
             std::map<std::string, SourcePos> seen;
             for (const auto& item : *items) {
@@ -80,7 +80,7 @@ std::optional<EtherCATInfo> SourceParser::parse(const YAML::Node& root, std::vec
             }
         }
     }
-    if (const YAML::Node* n = f->find("modules")) {
+    if (const Node* n = f->find("modules")) {
         if (auto items = r_.sequence(*n, "modules")) {
             std::map<std::uint32_t, SourcePos> idents;
             for (const auto& item : *items) {
@@ -148,30 +148,22 @@ DeviceSource load_device_source(std::string_view bytes, const std::string& path,
                                 source->position_of(nul));
             return out;
         }
-        yaml::PrescanLimits limits;
+        yaml::TreeLimits limits;
         limits.max_depth = options.max_depth;
         limits.max_nodes = options.max_nodes;
-        const yaml::PrescanResult scan = yaml::prescan(text, path, limits, diagnostics);
-        if (!scan.ok) {
-            diagnostics.sort();
-            return out;
-        }
-        if (scan.empty) {
+        bool empty = false;
+        const std::unique_ptr<yaml::Tree> tree = yaml::Tree::parse(text, path, limits, diagnostics, empty);
+        if (empty && !diagnostics.has_errors())
             diagnostics.emplace(Severity::error, "yaml-missing-key", "the file is empty; a device source needs vendor and devices",
                                 path, SourcePos{1, 1});
-            return out;
-        }
-        YAML::Node root;
-        try {
-            root = YAML::Load(text);
-        } catch (const YAML::Exception& e) {
-            diagnostics.emplace(Severity::error, "yaml-syntax", "YAML syntax: " + e.msg, path, yaml::pos_of(e.mark));
+        if (!tree) {
             diagnostics.sort();
             return out;
         }
+        const yaml::Node root(tree->root());
 
         yaml::Reader reader(path, diagnostics);
-        yaml::SourceParser parser(reader);
+        yaml::SourceParser parser(reader, *source);
         std::vector<yaml::ParsedDevice> devices;
         std::vector<yaml::ParsedModule> modules;
         std::optional<EtherCATInfo> info = parser.parse(root, devices, modules);

@@ -8,11 +8,12 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
+#include "yaml/tree.hpp"
 
 #include "esi/derive/derive.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/model/ethercat_info.hpp"
+#include "esi/source_text.hpp"
 #include "yaml/yaml_reader.hpp"
 
 namespace esi::yaml {
@@ -47,10 +48,10 @@ struct ParsedModule {
 
 class SourceParser {
 public:
-    explicit SourceParser(Reader& reader) : r_(reader) {}
+    SourceParser(Reader& reader, const SourceText& source) : r_(reader), source_(source) {}
 
     // The whole file; nullopt when the root is not a mapping.
-    std::optional<EtherCATInfo> parse(const YAML::Node& root, std::vector<ParsedDevice>& devices,
+    std::optional<EtherCATInfo> parse(const Node& root, std::vector<ParsedDevice>& devices,
                                       std::vector<ParsedModule>& modules);
 
 private:
@@ -58,51 +59,53 @@ private:
     void images(const Fields& f, Images& out);
     void extras(const Fields& f, std::string_view key, Extras& out);
     Names names_of(const Fields& f, std::string_view key);
-    std::optional<ObjectRef> object_ref(const YAML::Node& node, const ObjectNames& names, std::string_view what);
-    std::optional<std::vector<Transition>> transitions(const YAML::Node& node);
-    DeriveOptions derive_options(const YAML::Node& node, bool module);
-    std::optional<Profile> profile(const YAML::Node& node);
-    void init_cmds(const YAML::Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
+    std::optional<ObjectRef> object_ref(const Node& node, const ObjectNames& names, std::string_view what);
+    std::optional<std::vector<Transition>> transitions(const Node& node);
+    DeriveOptions derive_options(const Node& node, bool module);
+    std::optional<Profile> profile(const Node& node);
+    void init_cmds(const Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
                    std::vector<InitCmdValue>* values);
-    std::optional<Mailbox> mailbox(const YAML::Node& node, Context context, MailboxLayout* layout, const ObjectNames& names,
+    std::optional<Mailbox> mailbox(const Node& node, Context context, MailboxLayout* layout, const ObjectNames& names,
                                    std::vector<InitCmdValue>* coe_values);
-    std::vector<Pdo> pdos(const YAML::Node& node, PdoDirection direction, const ObjectNames& names, std::vector<bool>* assign);
-    std::optional<PdoEntry> pdo_entry(const YAML::Node& node, const ObjectNames& names);
+    std::vector<Pdo> pdos(const Node& node, PdoDirection direction, const ObjectNames& names, std::vector<bool>* assign);
+    std::optional<PdoEntry> pdo_entry(const Node& node, const ObjectNames& names);
 
     // ---- parse_dictionary.cpp ----------------------------------------------------------------
     // Reads data_types and objects into `dictionary`; returns the names of the objects.
     ObjectNames dictionary(const Fields& f, Dictionary& dictionary);
-    std::optional<DataType> data_type(const YAML::Node& node);
-    void object(const YAML::Node& key, const YAML::Node& value, Dictionary& dictionary,
+    std::optional<DataType> data_type(const Node& node);
+    void object(const Node& key, const Node& value, Dictionary& dictionary,
                 std::map<std::uint32_t, std::pair<SourcePos, std::string>>& seen);
     std::optional<ObjectFlags> flags(const Fields& f);
     std::optional<ObjectInfo> info(const Fields& f, const Dictionary& dictionary, const std::string& type_name,
                                    std::string_view what);
-    std::optional<Number> typed_integer(const YAML::Node& node, const Dictionary& dictionary, const std::string& type_name,
+    std::optional<Number> typed_integer(const Node& node, const Dictionary& dictionary, const std::string& type_name,
                                         std::string_view what);
 
     // ---- parse_device.cpp --------------------------------------------------------------------
-    std::optional<ParsedDevice> device(const YAML::Node& node, std::optional<std::uint32_t> vendor_id,
+    std::optional<ParsedDevice> device(const Node& node, std::optional<std::uint32_t> vendor_id,
                                        const std::vector<ParsedModule>& modules, std::size_t group_count,
                                        const std::string* only_group);
-    std::optional<Eeprom> eeprom(const YAML::Node& node);
-    std::vector<SyncManager> sync_managers(const YAML::Node& node, std::vector<SourcePos>& size_pos);
-    std::vector<Fmmu> fmmus(const YAML::Node& node);
-    std::vector<SyncUnit> sync_units(const YAML::Node& node);
-    std::optional<Dc> dc(const YAML::Node& node);
-    std::optional<DcTime> dc_time(const YAML::Node& node, bool shift);
+    std::optional<Eeprom> eeprom(const Node& node);
+    std::vector<SyncManager> sync_managers(const Node& node, std::vector<SourcePos>& size_pos);
+    std::vector<Fmmu> fmmus(const Node& node);
+    std::vector<SyncUnit> sync_units(const Node& node);
+    std::optional<Dc> dc(const Node& node);
+    std::optional<DcTime> dc_time(const Node& node, bool shift);
+    Limits limits(const Node& node);
 
     // ---- parse_module.cpp --------------------------------------------------------------------
-    std::optional<ParsedModule> module(const YAML::Node& node);
-    std::optional<Slots> slots(const YAML::Node& node, const std::vector<ParsedModule>& modules);
-    std::optional<std::uint32_t> module_ident(const YAML::Node& node, const std::vector<ParsedModule>& modules,
+    std::optional<ParsedModule> module(const Node& node);
+    std::optional<Slots> slots(const Node& node, const std::vector<ParsedModule>& modules);
+    std::optional<std::uint32_t> module_ident(const Node& node, const std::vector<ParsedModule>& modules,
                                               std::string_view what);
 
     // ---- source.cpp ---------------------------------------------------------------------------
-    std::optional<Vendor> vendor(const YAML::Node& node);
-    std::optional<Group> group(const YAML::Node& node);
+    std::optional<Vendor> vendor(const Node& node);
+    std::optional<Group> group(const Node& node);
 
     Reader& r_;
+    const SourceText& source_;
 };
 
 // Objects a device or module declares, indexed by primary name (ambiguous names are marked).

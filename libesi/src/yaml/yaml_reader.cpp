@@ -9,40 +9,30 @@
 
 namespace esi::yaml {
 
-SourcePos pos_of(const YAML::Mark& mark) {
-    if (mark.is_null() || mark.line < 0 || mark.column < 0) return {};
-    return SourcePos{static_cast<std::uint32_t>(mark.line) + 1u, static_cast<std::uint32_t>(mark.column) + 1u};
-}
-
 std::string did_you_mean(std::string_view word, std::span<const std::string_view> candidates) {
     const std::string s = closest_match(word, candidates);
     if (s.empty() || edit_distance(word, s) >= std::max<std::size_t>(word.size(), 1)) return {};
     return "; did you mean '" + s + "'?";
 }
 
-SourcePos pos_of(const YAML::Node& node) {
-    if (!node.IsDefined()) return {};
-    return pos_of(node.Mark());
-}
-
-Fields::Fields(const YAML::Node& node) : node_(node) {
+Fields::Fields(const Node& node) : node_(node) {
     items_.reserve(node.size());
     for (auto it = node.begin(); it != node.end(); ++it) {
         Item item;
         item.key_node = it->first;
         item.value = it->second;
-        item.key = it->first.IsScalar() ? it->first.Scalar() : std::string();
+        if (it->first.IsScalar()) item.key = it->first.Scalar();
         items_.push_back(std::move(item));
     }
 }
 
-const YAML::Node* Fields::find(std::string_view key) const {
+const Node* Fields::find(std::string_view key) const {
     for (const auto& item : items_)
         if (item.key == key) return &item.value;
     return nullptr;
 }
 
-const YAML::Node* Fields::key_node(std::string_view key) const {
+const Node* Fields::key_node(std::string_view key) const {
     for (const auto& item : items_)
         if (item.key == key) return &item.key_node;
     return nullptr;
@@ -58,7 +48,7 @@ Diagnostic& Reader::warning(SourcePos pos, std::string rule, std::string message
 
 namespace {
 
-std::string_view kind_name(const YAML::Node& node) {
+std::string_view kind_name(const Node& node) {
     if (node.IsNull()) return "nothing";
     if (node.IsMap()) return "a mapping";
     if (node.IsSequence()) return "a list";
@@ -67,7 +57,7 @@ std::string_view kind_name(const YAML::Node& node) {
 
 }  // namespace
 
-std::optional<Fields> Reader::mapping(const YAML::Node& node, Context context, std::string_view what) {
+std::optional<Fields> Reader::mapping(const Node& node, Context context, std::string_view what) {
     if (!node.IsMap()) {
         error(node, "yaml-type", "'" + std::string(what) + "' must be a mapping, not " + std::string(kind_name(node)));
         return std::nullopt;
@@ -80,7 +70,7 @@ std::optional<Fields> Reader::mapping(const YAML::Node& node, Context context, s
             continue;
         }
         if (std::find(allowed.keys.begin(), allowed.keys.end(), item.key) != allowed.keys.end()) continue;
-        std::string message = "unknown key '" + item.key + "' in " + std::string(what);
+        std::string message = "unknown key '" + std::string(item.key) + "' in " + std::string(what);
         message += did_you_mean(item.key, allowed.keys);
         error(item.key_node, "yaml-unknown-key", message);
     }
@@ -93,18 +83,18 @@ bool Reader::require(const Fields& fields, std::string_view key, std::string_vie
     return false;
 }
 
-std::optional<std::vector<YAML::Node>> Reader::sequence(const YAML::Node& node, std::string_view what) {
+std::optional<std::vector<Node>> Reader::sequence(const Node& node, std::string_view what) {
     if (!node.IsSequence()) {
         error(node, "yaml-type", "'" + std::string(what) + "' must be a list, not " + std::string(kind_name(node)));
         return std::nullopt;
     }
-    std::vector<YAML::Node> items;
+    std::vector<Node> items;
     items.reserve(node.size());
     for (const auto& item : node) items.push_back(item);
     return items;
 }
 
-std::optional<std::string> Reader::text(const YAML::Node& node, std::string_view what) {
+std::optional<std::string> Reader::text(const Node& node, std::string_view what) {
     if (!node.IsScalar()) {
         error(node, "yaml-type", "'" + std::string(what) + "' must be text, not " + std::string(kind_name(node)));
         return std::nullopt;
@@ -112,7 +102,7 @@ std::optional<std::string> Reader::text(const YAML::Node& node, std::string_view
     return node.Scalar();
 }
 
-std::optional<bool> Reader::boolean(const YAML::Node& node, std::string_view what) {
+std::optional<bool> Reader::boolean(const Node& node, std::string_view what) {
     if (node.IsScalar()) {
         std::string v = node.Scalar();
         std::transform(v.begin(), v.end(), v.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -146,7 +136,7 @@ std::optional<Number> parse_radix(std::string_view text, int base) {
 
 }  // namespace
 
-std::optional<Number> Reader::parse_integer(const YAML::Node& node, std::string_view what, bool report) {
+std::optional<Number> Reader::parse_integer(const Node& node, std::string_view what, bool report) {
     if (!node.IsScalar()) {
         if (report)
             error(node, "yaml-type", "'" + std::string(what) + "' must be a number, not " + std::string(kind_name(node)));
@@ -165,9 +155,9 @@ std::optional<Number> Reader::parse_integer(const YAML::Node& node, std::string_
     return std::nullopt;
 }
 
-std::optional<Number> Reader::number(const YAML::Node& node, std::string_view what) { return parse_integer(node, what, true); }
+std::optional<Number> Reader::number(const Node& node, std::string_view what) { return parse_integer(node, what, true); }
 
-std::optional<double> Reader::real(const YAML::Node& node, std::string_view what) {
+std::optional<double> Reader::real(const Node& node, std::string_view what) {
     if (node.IsScalar()) {
         const std::string_view s = trim(node.Scalar());
         if (auto i = parse_integer(node, what, false)) {
@@ -186,7 +176,7 @@ std::optional<double> Reader::real(const YAML::Node& node, std::string_view what
     return std::nullopt;
 }
 
-std::optional<HexData> Reader::hex(const YAML::Node& node, std::string_view what) {
+std::optional<HexData> Reader::hex(const Node& node, std::string_view what) {
     if (!node.IsScalar()) {
         error(node, "yaml-type", "'" + std::string(what) + "' must be hex bytes such as 0800CC00, not " + std::string(kind_name(node)));
         return std::nullopt;
@@ -228,7 +218,7 @@ constexpr std::array languages{
 
 }  // namespace
 
-Names Reader::names(const YAML::Node& node, std::string_view what) {
+Names Reader::names(const Node& node, std::string_view what) {
     Names out;
     if (node.IsScalar()) {
         out.push_back(LocalizedText{node.Scalar(), std::nullopt, pos_of(node)});
@@ -241,8 +231,8 @@ Names Reader::names(const YAML::Node& node, std::string_view what) {
         return out;
     }
     for (auto it = node.begin(); it != node.end(); ++it) {
-        const YAML::Node key = it->first;
-        const YAML::Node value = it->second;
+        const Node key = it->first;
+        const Node value = it->second;
         if (!key.IsScalar()) {
             error(key, "yaml-type", "languages of '" + std::string(what) + "' are codes such as en or de");
             continue;
@@ -281,7 +271,7 @@ Names Reader::names(const YAML::Node& node, std::string_view what) {
     return out;
 }
 
-std::optional<SourceValue> Reader::scalar_value(const YAML::Node& node, std::string_view what) {
+std::optional<SourceValue> Reader::scalar_value(const Node& node, std::string_view what) {
     if (!node.IsScalar()) {
         error(node, "yaml-type", "'" + std::string(what) + "' must be a single value, not " + std::string(kind_name(node)));
         return std::nullopt;
@@ -289,7 +279,7 @@ std::optional<SourceValue> Reader::scalar_value(const YAML::Node& node, std::str
     SourceValue v;
     v.pos = pos_of(node);
     v.text = node.Scalar();
-    const bool quoted = node.Tag() == "!";
+    const bool quoted = node.quoted();
     if (!quoted) {
         if (auto i = parse_integer(node, what, false)) {
             v.kind = SourceValue::Kind::integer;

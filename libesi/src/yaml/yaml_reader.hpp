@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
+#include "yaml/tree.hpp"
 
 #include "esi/derive/typed_value.hpp"
 #include "esi/diagnostic.hpp"
@@ -22,33 +22,32 @@
 
 namespace esi::yaml {
 
-[[nodiscard]] SourcePos pos_of(const YAML::Mark& mark);
 // "; did you mean 'x'?" for a close candidate, else empty (a two-letter word is not "close" to
 // every other two-letter word).
 [[nodiscard]] std::string did_you_mean(std::string_view word, std::span<const std::string_view> candidates);
-[[nodiscard]] SourcePos pos_of(const YAML::Node& node);
+[[nodiscard]] inline SourcePos pos_of(const Node& node) { return node.pos(); }
 
 // A mapping read once, keys in document order.
 class Fields {
 public:
     Fields() = default;
-    explicit Fields(const YAML::Node& node);
+    explicit Fields(const Node& node);
 
-    [[nodiscard]] const YAML::Node* find(std::string_view key) const;
+    [[nodiscard]] const Node* find(std::string_view key) const;
     [[nodiscard]] bool has(std::string_view key) const { return find(key) != nullptr; }
-    [[nodiscard]] const YAML::Node* key_node(std::string_view key) const;
-    [[nodiscard]] const YAML::Node& node() const { return node_; }
+    [[nodiscard]] const Node* key_node(std::string_view key) const;
+    [[nodiscard]] const Node& node() const { return node_; }
     [[nodiscard]] SourcePos pos() const { return pos_of(node_); }
 
     struct Item {
-        std::string key;
-        YAML::Node key_node;
-        YAML::Node value;
+        std::string_view key;  // into the tree, which outlives the Fields
+        Node key_node;
+        Node value;
     };
     [[nodiscard]] const std::vector<Item>& items() const { return items_; }
 
 private:
-    YAML::Node node_;
+    Node node_;
     std::vector<Item> items_;
 };
 
@@ -60,56 +59,56 @@ public:
     [[nodiscard]] Diagnostics& diagnostics() { return diagnostics_; }
 
     Diagnostic& error(SourcePos pos, std::string rule, std::string message);
-    Diagnostic& error(const YAML::Node& at, std::string rule, std::string message) {
+    Diagnostic& error(const Node& at, std::string rule, std::string message) {
         return error(pos_of(at), std::move(rule), std::move(message));
     }
     Diagnostic& warning(SourcePos pos, std::string rule, std::string message);
 
     // A mapping whose keys must come from `context`; unknown keys are reported with a
     // did-you-mean. nullopt (and a diagnostic) when the node is not a mapping.
-    std::optional<Fields> mapping(const YAML::Node& node, Context context, std::string_view what);
+    std::optional<Fields> mapping(const Node& node, Context context, std::string_view what);
     // Reports a required key that is missing.
     bool require(const Fields& fields, std::string_view key, std::string_view what);
 
     // A sequence's items; a lone non-sequence value is an error.
-    std::optional<std::vector<YAML::Node>> sequence(const YAML::Node& node, std::string_view what);
+    std::optional<std::vector<Node>> sequence(const Node& node, std::string_view what);
 
-    std::optional<std::string> text(const YAML::Node& node, std::string_view what);
-    std::optional<bool> boolean(const YAML::Node& node, std::string_view what);
+    std::optional<std::string> text(const Node& node, std::string_view what);
+    std::optional<bool> boolean(const Node& node, std::string_view what);
     // Integers: decimal, 0x/#x hex, 0b binary, 0o octal, with an optional sign.
-    std::optional<Number> number(const YAML::Node& node, std::string_view what);
+    std::optional<Number> number(const Node& node, std::string_view what);
     template <class T>
-    std::optional<T> integer(const YAML::Node& node, std::string_view what, T min = std::numeric_limits<T>::min(),
+    std::optional<T> integer(const Node& node, std::string_view what, T min = std::numeric_limits<T>::min(),
                              T max = std::numeric_limits<T>::max());
-    std::optional<double> real(const YAML::Node& node, std::string_view what);
+    std::optional<double> real(const Node& node, std::string_view what);
     // hexBinary: pairs of hex digits, blanks allowed between them.
-    std::optional<HexData> hex(const YAML::Node& node, std::string_view what);
+    std::optional<HexData> hex(const Node& node, std::string_view what);
     // A string (one Name without LcId) or a mapping of languages (en, de …, or a numeric LcId).
-    Names names(const YAML::Node& node, std::string_view what);
-    std::optional<SourceValue> scalar_value(const YAML::Node& node, std::string_view what);
+    Names names(const Node& node, std::string_view what);
+    std::optional<SourceValue> scalar_value(const Node& node, std::string_view what);
 
     // Convenience: read `key` of a mapping into an optional field when present.
     template <class T>
     void optional_integer(const Fields& f, std::string_view key, std::optional<T>& out, T min = std::numeric_limits<T>::min(),
                           T max = std::numeric_limits<T>::max()) {
-        if (const YAML::Node* n = f.find(key)) out = integer<T>(*n, key, min, max);
+        if (const Node* n = f.find(key)) out = integer<T>(*n, key, min, max);
     }
     void optional_bool(const Fields& f, std::string_view key, std::optional<bool>& out) {
-        if (const YAML::Node* n = f.find(key)) out = boolean(*n, key);
+        if (const Node* n = f.find(key)) out = boolean(*n, key);
     }
     void optional_text(const Fields& f, std::string_view key, std::optional<std::string>& out) {
-        if (const YAML::Node* n = f.find(key)) out = text(*n, key);
+        if (const Node* n = f.find(key)) out = text(*n, key);
     }
 
 private:
-    std::optional<Number> parse_integer(const YAML::Node& node, std::string_view what, bool report);
+    std::optional<Number> parse_integer(const Node& node, std::string_view what, bool report);
 
     std::string path_;
     Diagnostics& diagnostics_;
 };
 
 template <class T>
-std::optional<T> Reader::integer(const YAML::Node& node, std::string_view what, T min, T max) {
+std::optional<T> Reader::integer(const Node& node, std::string_view what, T min, T max) {
     const std::optional<Number> n = number(node, what);
     if (!n) return std::nullopt;
     bool in_range = false;
