@@ -279,3 +279,17 @@ TEST(YamlBadInput, HostileTextNeverThrows) {
         EXPECT_TRUE(s.diagnostics.has_errors());
     }
 }
+
+TEST(YamlBadInput, LimitsPositionsAreTheFilesInBlockStyleToo) {
+    const DeviceSource s = load_yaml(header + "    limits:\n      max_pdos: { rx: 4, tx: 4 }\n      bitlen: [8, 16, sixteen]\n"
+                                              "    physics: YY\n");
+    expect_error(s, "config", 11, 23, "bitlen");
+}
+
+TEST(YamlBadInput, LimitsAfterUnicodeTextKeepTheirColumns) {
+    // The limits sit after "Größe" on the same line: columns count code points, not bytes.
+    const DeviceSource s = load_yaml(
+        "vendor: { id: 0x10, name: Example }\n"
+        "devices: [{ type: D, name: Größe, product_code: 1, revision: 2, group: G, limits: { max_pdox: 1 } }]\n");
+    expect_error(s, "config", 2, 85, "did you mean 'max_pdos'?");
+}

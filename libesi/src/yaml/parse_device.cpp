@@ -39,7 +39,12 @@ Limits SourceParser::limits(const Node& node) {
     const std::size_t end = std::max(begin, offset_of(source_, node.end_pos()));
     std::string text;
     text.reserve(end);
-    for (std::size_t i = 0; i < begin; ++i) text.push_back(source_.text()[i] == '\n' ? '\n' : ' ');
+    // One blank per code point, so that columns (which count code points) stay where they were.
+    for (std::size_t i = 0; i < begin; ++i) {
+        const char c = source_.text()[i];
+        if (c == '\n') text.push_back('\n');
+        else if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) text.push_back(' ');
+    }
     text.append(source_.text(), begin, end - begin);
     try {
         return parse_limits(YAML::Load(text), r_.path(), r_.diagnostics());
