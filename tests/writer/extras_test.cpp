@@ -137,6 +137,22 @@ TEST(WriterExtras, ElementsWithNamesXmlCannotCarryAreLeftOut) {
     EXPECT_TRUE(esi::read_esi(out, "t.xml").document.has_value());
 }
 
+TEST(WriterExtras, AbsurdlyDeepVerbatimTreesAreCutNotFollowedIntoAStackOverflow) {
+    esi::XmlElement root = element("Deep", "Name");
+    esi::XmlElement* at = &root;
+    for (int i = 0; i < 5000; ++i) {
+        at->children.push_back(element("Level", ""));
+        at = &at->children.back();
+    }
+    at->text = "bottom";
+    const std::string out = esi::write_esi(device_with({root}));
+    EXPECT_TRUE(esi::read_esi(out, "deep.xml").document.has_value());
+    EXPECT_FALSE(contains(out, "bottom"));
+    std::size_t levels = 0;
+    for (auto at_level = out.find("<Level"); at_level != std::string::npos; at_level = out.find("<Level", at_level + 1)) ++levels;
+    EXPECT_EQ(levels, 1024u);  // the writer's depth limit
+}
+
 TEST(WriterExtras, InfoListAndDictRootExtrasArePlaced) {
     const std::string dict = R"(<EtherCATDict><Before/><Dictionary><Objects/></Dictionary><After/></EtherCATDict>)";
     const std::string out = rewrite(dict);
