@@ -64,8 +64,6 @@ public:
         end();
     }
 
-    [[nodiscard]] std::size_t depth() const { return stack_.size(); }
-
 private:
     struct Open {
         std::string_view name;

@@ -7,9 +7,9 @@
 // is anchored at the `after` of its first element. While an element's typed children are written
 // in schema order, ChildPlacer is told which child group comes next (`at`) and writes each run
 // right after the group it is anchored at. A run whose anchor is not written (the model no longer
-// has that element, or the anchor is a name the writer does not produce) goes where the schema
-// puts its own first element, or at the end when the schema does not know it either. A run
-// without anchor (it was the first child) goes first.
+// has that element) goes where the schema puts that anchor; when the schema does not know the
+// anchor either, where it puts the run's own first element; failing both, at the end. A run
+// without anchor (it was the first child) goes first, or to its schema place if it has one.
 
 #include <span>
 #include <string_view>
