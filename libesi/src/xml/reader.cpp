@@ -156,8 +156,9 @@ private:
                 previous = c.name();
             }
         }
-        // parse_embed_pcdata stores a lone text child in the element's own value.
-        if (e.text.empty() && n.value()[0] != '\0') e.text = n.value();
+        // parse_embed_pcdata stores the text that comes before any child element in the
+        // element's own value, not as a child: it is the start of the text (mixed content).
+        if (n.value()[0] != '\0') e.text.insert(0, n.value());
         return e;
     }
 
@@ -930,6 +931,12 @@ Object Reader::read_object(const pugi::xml_node n) {
             has_index = true;
             o.index = u32(c).value_or(0);
             o.index_pos = pos_of(c);
+            for (const auto a : c.attributes()) {
+                const std::string_view an = a.name();
+                if (an == "DependOnSlot") o.index_depend_on_slot = boolean(a, c);
+                else if (an == "DependOnSlotGroup") o.index_depend_on_slot_group = boolean(a, c);
+                else if (an == "OverwrittenByModule") o.index_overwritten_by_module = boolean(a, c);
+            }
         } else if (name == "Name") o.names.push_back(localized(c));
         else if (name == "Comment") o.comments.push_back(localized(c));
         else if (name == "Type") {
