@@ -6,6 +6,7 @@
 #include "check/od_checks.hpp"
 #include "check/od_scope.hpp"
 #include "check/od_text.hpp"
+#include "check/od_type_index.hpp"
 #include "check/od_values.hpp"
 #include "esi/model/object_layout.hpp"
 
@@ -62,8 +63,22 @@ EntryValues values_of(const DataTypeSubItem& item) {
     return {item.default_value, item.default_data, item.min_value, no_data, item.max_value, no_data, item.default_string};
 }
 
+// What a message calls the entry, built only when there is something to report.
+struct EntryName {
+    const Object* object = nullptr;  // object entries
+    std::uint32_t subindex = 0;
+    bool whole_object = false;  // a VAR: the object itself
+    const DataType* type = nullptr;  // DataType SubItems
+    const DataTypeSubItem* item = nullptr;
+
+    [[nodiscard]] std::string text() const {
+        if (item) return "SubItem '" + item->name + "' of DataType " + type->name;
+        return whole_object ? object_address(object->index) : entry_address(object->index, subindex);
+    }
+};
+
 // Length checks of DefaultData/MinData/MaxData and DefaultString for an entry of `bits` bits.
-void check_lengths(RuleContext& context, const EntryValues& values, const std::string& what, std::string_view type_name,
+void check_lengths(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
                    const BasicType* basic, std::uint64_t bits, SourcePos fallback) {
     if (bits == 0) return;
     const std::uint64_t bytes = (bits + 7) / 8;
@@ -76,7 +91,7 @@ void check_lengths(RuleContext& context, const EntryValues& values, const std::s
         const std::uint64_t length = data->byte_length();
         if (length == bytes || (variable && length <= bytes)) return;
         context.report(data->pos.line ? data->pos : fallback,
-                       std::string(element) + " of " + what + " is " + std::to_string(length) + (length == 1 ? " byte" : " bytes") +
+                       std::string(element) + " of " + name.text() + " is " + std::to_string(length) + (length == 1 ? " byte" : " bytes") +
                            " but the entry (" + std::string(type_name) + ", " + bits_text(bits) + ") is " +
                            (variable ? "at most " : "") + std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes"));
     };
@@ -84,7 +99,7 @@ void check_lengths(RuleContext& context, const EntryValues& values, const std::s
     check(values.min_data, "MinData");
     check(values.max_data, "MaxData");
     if (values.default_string && values.default_string->size() > bytes)
-        context.report(fallback, "DefaultString of " + what + " has " + std::to_string(values.default_string->size()) +
+        context.report(fallback, "DefaultString of " + name.text() + " has " + std::to_string(values.default_string->size()) +
                                      " bytes but the entry (" + std::string(type_name) + ") holds " + std::to_string(bytes));
 }
 
@@ -112,23 +127,23 @@ Reading read_values(const EntryValues& values, const ValueFormat& format, bool a
     return r;
 }
 
-std::optional<std::string> range_violation(const Reading& r, const ValueFormat& format, const std::string& what,
+std::optional<std::string> range_violation(const Reading& r, const ValueFormat& format, const EntryName& name,
                                            std::string_view type_name) {
     if (r.min && r.max && less(*r.max, *r.min))
-        return "MinValue " + number_text(*r.min) + " of " + what + " is greater than its MaxValue " + number_text(*r.max);
+        return "MinValue " + number_text(*r.min) + " of " + name.text() + " is greater than its MaxValue " + number_text(*r.max);
     if (!r.default_value) return std::nullopt;
     const Number& def = *r.default_value;
-    if (r.min && less(def, *r.min)) return "the default " + number_text(def) + " of " + what + " is below its MinValue " + number_text(*r.min);
-    if (r.max && less(*r.max, def)) return "the default " + number_text(def) + " of " + what + " is above its MaxValue " + number_text(*r.max);
+    if (r.min && less(def, *r.min)) return "the default " + number_text(def) + " of " + name.text() + " is below its MinValue " + number_text(*r.min);
+    if (r.max && less(*r.max, def)) return "the default " + number_text(def) + " of " + name.text() + " is above its MaxValue " + number_text(*r.max);
     const Number low = format_min(format);
     const Number high = format_max(format);
     if (less(def, low) || less(high, def))
-        return "the default " + number_text(def) + " of " + what + " does not fit " + std::string(type_name) + " (" +
+        return "the default " + number_text(def) + " of " + name.text() + " does not fit " + std::string(type_name) + " (" +
                bits_text(format.bit_size) + ": " + number_text(low) + " to " + number_text(high) + ")";
     return std::nullopt;
 }
 
-void check_range(RuleContext& context, const EntryValues& values, const std::string& what, std::string_view type_name,
+void check_range(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
                  const BasicType* basic, std::uint64_t bits, SourcePos pos) {
     if (!basic || !basic->is_integer()) return;
     const std::uint64_t width = bits > 0 ? bits : basic->bit_size;
@@ -136,8 +151,8 @@ void check_range(RuleContext& context, const EntryValues& values, const std::str
     const ValueFormat format{width, basic->type_class == TypeClass::signed_integer};
     // Reported only when neither reading of the values is in range: a value is a bit pattern
     // or a plain number depending on the tool that wrote it, and the file does not say which.
-    const std::optional<std::string> as_patterns = range_violation(read_values(values, format, true), format, what, type_name);
-    if (!as_patterns || !range_violation(read_values(values, format, false), format, what, type_name)) return;
+    const std::optional<std::string> as_patterns = range_violation(read_values(values, format, true), format, name, type_name);
+    if (!as_patterns || !range_violation(read_values(values, format, false), format, name, type_name)) return;
     context.report(pos, *as_patterns);
 }
 
@@ -145,11 +160,11 @@ template <class F>
 void for_each_valued_entry(const EsiDocument& document, F&& f) {
     for (const auto& scope : dictionary_scopes(document)) {
         const Dictionary& dictionary = *scope.dictionary;
+        const TypeIndex types(dictionary);
         for (const auto& type : dictionary.data_types)
             for (const auto& item : type.sub_items) {
                 if (!item.default_data && !item.default_value && !item.default_string && !item.max_value && !item.min_value) continue;
-                const ResolvedType resolved = resolve_type(&dictionary, item.type);
-                f(values_of(item), "SubItem '" + item.name + "' of DataType " + type.name, std::string_view(item.type), resolved.basic,
+                f(values_of(item), EntryName{nullptr, 0, false, &type, &item}, std::string_view(item.type), types.basic(item.type),
                   item.bit_size, item.pos);
             }
         for (const auto& object : dictionary.objects) {
@@ -157,9 +172,8 @@ void for_each_valued_entry(const EsiDocument& document, F&& f) {
             const ObjectLayout layout = layout_of(&dictionary, object);
             for (const auto& entry : layout.entries) {
                 if (!entry.info) continue;
-                const std::string what = layout.code == ObjectCode::var ? object_address(object.index)
-                                                                         : entry_address(object.index, entry.subindex);
-                f(values_of(*entry.info), what, std::string_view(entry.type), entry.basic, entry.bit_size, entry.info->pos);
+                f(values_of(*entry.info), EntryName{&object, entry.subindex, layout.code == ObjectCode::var, nullptr, nullptr},
+                  std::string_view(entry.type), entry.basic, entry.bit_size, entry.info->pos);
             }
         }
     }
@@ -212,16 +226,16 @@ void check_flags_value(const EsiDocument& document, RuleContext& context) {
 }
 
 void check_default_length(const EsiDocument& document, RuleContext& context) {
-    for_each_valued_entry(document, [&](const EntryValues& values, const std::string& what, std::string_view type_name,
+    for_each_valued_entry(document, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
                                         const BasicType* basic, std::uint64_t bits, SourcePos pos) {
-        check_lengths(context, values, what, type_name, basic, bits, pos);
+        check_lengths(context, values, name, type_name, basic, bits, pos);
     });
 }
 
 void check_default_range(const EsiDocument& document, RuleContext& context) {
-    for_each_valued_entry(document, [&](const EntryValues& values, const std::string& what, std::string_view type_name,
+    for_each_valued_entry(document, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
                                         const BasicType* basic, std::uint64_t bits, SourcePos pos) {
-        check_range(context, values, what, type_name, basic, bits, pos);
+        check_range(context, values, name, type_name, basic, bits, pos);
     });
 }
 

@@ -10,6 +10,32 @@ TypeIndex::TypeIndex(const Dictionary& dictionary) {
     for (const auto& t : dictionary.data_types) types_.emplace(std::string_view(t.name), &t);
 }
 
+TypeIndex::TypeIndex(const Dictionary* dictionary) {
+    if (!dictionary) return;
+    types_.reserve(dictionary->data_types.size());
+    for (const auto& t : dictionary->data_types) types_.emplace(std::string_view(t.name), &t);
+}
+
+const BasicType* TypeIndex::basic(std::string_view name) const {
+    name = trim(name);
+    for (std::size_t step = 0; step <= types_.size(); ++step) {
+        const DataType* t = find(name);
+        if (!t) {
+            const TypeName parsed = parse_type_name(name);
+            return parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string ? parsed.basic : nullptr;
+        }
+        if (!t->array_info.empty() || !t->sub_items.empty()) return nullptr;
+        const std::string_view base = t->base_type ? trim(*t->base_type) : std::string_view{};
+        if (base.empty() || base == name) {
+            // A DataType named like a basic type ("UINT" with its BitSize) is that type.
+            const TypeName parsed = parse_type_name(name);
+            return parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string ? parsed.basic : nullptr;
+        }
+        name = base;
+    }
+    return nullptr;  // a BaseType cycle
+}
+
 const DataType* TypeIndex::find(std::string_view name) const {
     const auto it = types_.find(trim(name));
     return it == types_.end() ? nullptr : it->second;

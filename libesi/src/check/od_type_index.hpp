@@ -8,6 +8,7 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
 
 namespace esi::rules {
@@ -21,6 +22,8 @@ enum class TypeNameStatus {
 class TypeIndex {
 public:
     explicit TypeIndex(const Dictionary& dictionary);
+    // For owners without a Dictionary: only basic types, STRING(n) and arrays of them resolve.
+    explicit TypeIndex(const Dictionary* dictionary);
 
     // The first DataType of that name (as ETG.2000's DataTypeKey would have it unique).
     [[nodiscard]] const DataType* find(std::string_view name) const;
@@ -29,6 +32,9 @@ public:
     [[nodiscard]] TypeNameStatus status(std::string_view name, std::string_view* culprit = nullptr) const;
     // Bits of a type: a DataType's BitSize, else what the name implies; nullopt when unknown.
     [[nodiscard]] std::optional<std::uint64_t> bit_size(std::string_view name) const;
+    // The basic type a name ends in, following BaseType (an enum DT0800EN03 based on USINT is
+    // USINT); nullptr for arrays, structures and unresolved names.
+    [[nodiscard]] const BasicType* basic(std::string_view name) const;
     // Whether following BaseType from this DataType comes back to it.
     [[nodiscard]] bool in_base_type_cycle(const DataType& type) const;
 

@@ -20,6 +20,17 @@ void for_each_entry(const EsiDocument& document, F&& f) {
         });
 }
 
+// The same, with the types of the owner's Dictionary at hand.
+template <class F>
+void for_each_typed_entry(const EsiDocument& document, F&& f) {
+    for (const auto& scope : pdo_scopes(document)) {
+        const TypeIndex types(scope.dictionary);
+        for (const auto* list : {scope.rx_pdos, scope.tx_pdos})
+            for (const auto& pdo : *list)
+                for (const auto& entry : pdo.entries) f(scope, types, entry);
+    }
+}
+
 SourcePos data_type_or_entry(const PdoEntry& entry) { return entry.data_type_pos.line ? entry.data_type_pos : entry.pos; }
 
 std::vector<std::string_view> basic_type_names() {
@@ -32,8 +43,8 @@ std::vector<std::string_view> basic_type_names() {
 
 void check_entry_type_unknown(const EsiDocument& document, RuleContext& context) {
     static const std::vector<std::string_view> names = basic_type_names();
-    for_each_entry(document, [&](const PdoScope& scope, const Pdo&, const PdoEntry& entry) {
-        const EntryType type = entry_type(scope.dictionary, entry);
+    for_each_typed_entry(document, [&](const PdoScope& scope, const TypeIndex& types, const PdoEntry& entry) {
+        const EntryType type = entry_type(types, entry);
         if (!type.present) {
             // Padding needs no DataType; a mapped value does, and an empty element says nothing.
             if (entry.data_type && !entry.is_padding())
@@ -42,8 +53,10 @@ void check_entry_type_unknown(const EsiDocument& document, RuleContext& context)
         }
         const std::string& text = *entry.data_type;
         if (!type.standard_name.empty()) {
-            context.report(data_type_or_entry(entry), entry_label(entry) + " has DataType '" + text +
-                                                          "', which is not an ESI type name; the standard name is '" +
+            const bool whole = type.nonstandard_name == trim(text);
+            context.report(data_type_or_entry(entry), entry_label(entry) + " has DataType '" + text + "'" +
+                                                          (whole ? ", which" : ": '" + std::string(type.nonstandard_name) + "'") +
+                                                          " is not an ESI type name; the standard name is '" +
                                                           std::string(type.standard_name) + "'");
             return;
         }
@@ -57,10 +70,10 @@ void check_entry_type_unknown(const EsiDocument& document, RuleContext& context)
 }
 
 void check_entry_bitlen_type(const EsiDocument& document, RuleContext& context) {
-    for_each_entry(document, [&](const PdoScope& scope, const Pdo&, const PdoEntry& entry) {
+    for_each_typed_entry(document, [&](const PdoScope&, const TypeIndex& types, const PdoEntry& entry) {
         // BitLen 0 is a missing or unreadable BitLen (the reader reports it) or an empty slot.
         if (entry.is_padding() || entry.bit_len == 0 || entry.bit_len_pos.line == 0) return;
-        const EntryType type = entry_type(scope.dictionary, entry);
+        const EntryType type = entry_type(types, entry);
         if (!type.known || type.bit_size == 0 || type.bit_size == entry.bit_len) return;
         context.report(entry.bit_len_pos, entry_label(entry) + " has BitLen " + std::to_string(entry.bit_len) + " but " +
                                               *entry.data_type + " is " + bits_text(type.bit_size));

@@ -8,6 +8,7 @@
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
 #include "esi/model/pdo.hpp"
+#include "check/od_type_index.hpp"
 
 namespace esi::rules {
 
@@ -16,9 +17,10 @@ struct EntryType {
     bool known = false;                  // it resolves (basic, STRING(n), array or defined)
     const BasicType* basic = nullptr;    // the basic type it ends in, if any
     std::uint64_t bit_size = 0;          // 0 when unknown or variable
-    std::string_view standard_name;      // non-empty: the text is a non-standard spelling of this
+    std::string_view nonstandard_name;   // the undefined non-standard spelling (UINT16), also inside ARRAY … OF
+    std::string_view standard_name;      // and the standard name it stands for (UINT)
 };
 
-[[nodiscard]] EntryType entry_type(const Dictionary* dictionary, const PdoEntry& entry);
+[[nodiscard]] EntryType entry_type(const TypeIndex& types, const PdoEntry& entry);
 
 }  // namespace esi::rules

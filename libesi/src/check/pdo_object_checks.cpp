@@ -32,16 +32,26 @@ bool is_profile_infrastructure(std::uint32_t index) {
     return (index >= 0x10F0 && index <= 0x10FF) || (index >= 0x1800 && index <= 0x19FF) || index >= 0xF000;
 }
 
+// A PDO entry that names an object, with the owner's Dictionary and types at hand.
+struct MappedEntry {
+    const PdoScope& scope;
+    const DictionaryIndex& dictionary;
+    const TypeIndex& types;
+    const Pdo& pdo;
+    const PdoEntry& entry;
+};
+
 template <class F>
 void for_each_mapped_entry(const EsiDocument& document, bool complete_dictionaries_only, F&& f) {
     for (const auto& scope : pdo_scopes(document)) {
         if (!scope.dictionary || scope.dictionary->objects.empty()) continue;
         if (complete_dictionaries_only && !scope.dictionary_is_complete) continue;
         const DictionaryIndex dictionary(scope.dictionary);
+        const TypeIndex types(scope.dictionary);
         scope.for_each_pdo([&](const Pdo& pdo) {
             if (is_oversampling(pdo)) return;
             for (const auto& entry : pdo.entries)
-                if (addresses_an_object(entry)) f(scope, dictionary, pdo, entry);
+                if (addresses_an_object(entry)) f(MappedEntry{scope, dictionary, types, pdo, entry});
         });
     }
 }
@@ -78,7 +88,9 @@ std::string target_label(const Object& object, const ObjectEntry& target) {
 }  // namespace
 
 void check_entry_object_missing(const EsiDocument& document, RuleContext& context) {
-    for_each_mapped_entry(document, true, [&](const PdoScope&, const DictionaryIndex& dictionary, const Pdo&, const PdoEntry& entry) {
+    for_each_mapped_entry(document, true, [&](const MappedEntry& m) {
+        const DictionaryIndex& dictionary = m.dictionary;
+        const PdoEntry& entry = m.entry;
         if (is_profile_infrastructure(entry.index)) return;
         const Object* object = dictionary.object(entry.index);
         if (!object) {
@@ -89,8 +101,9 @@ void check_entry_object_missing(const EsiDocument& document, RuleContext& contex
         const ObjectLayout* layout = dictionary.layout(entry.index);
         if (layout->entry(entry.effective_subindex())) return;
         // An object whose type does not resolve has no known sub-entries (od-type-unresolved says why).
-        const ResolvedType type = resolve_type(dictionary.dictionary(), object->type);
-        if (!type.known || type.cycle) return;
+        const DataType* type = m.types.find(object->type);
+        if (m.types.status(object->type) != TypeNameStatus::resolved || (type && type->base_type && m.types.in_base_type_cycle(*type)))
+            return;
         context.report(index_or_entry(entry), entry_label(entry) + " maps subindex " + std::to_string(entry.effective_subindex()) +
                                                   " of " + object_label(*object) + ", which has " + subindex_list(*layout),
                        {context.note(object->pos, "the object is declared here")});
@@ -98,10 +111,12 @@ void check_entry_object_missing(const EsiDocument& document, RuleContext& contex
 }
 
 void check_entry_object_type(const EsiDocument& document, RuleContext& context) {
-    for_each_mapped_entry(document, false, [&](const PdoScope&, const DictionaryIndex& dictionary, const Pdo&, const PdoEntry& entry) {
+    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+        const DictionaryIndex& dictionary = m.dictionary;
+        const PdoEntry& entry = m.entry;
         const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
         if (!target || !target->basic) return;
-        const EntryType type = entry_type(dictionary.dictionary(), entry);
+        const EntryType type = entry_type(m.types, entry);
         if (!type.known || !type.basic) return;
         // A size difference is pdo-entry-object-bitlen's finding, which names both types.
         if (target->bit_size != 0 && entry.bit_len != target->bit_size) return;
@@ -118,12 +133,14 @@ void check_entry_object_type(const EsiDocument& document, RuleContext& context) 
 }
 
 void check_entry_object_bitlen(const EsiDocument& document, RuleContext& context) {
-    for_each_mapped_entry(document, false, [&](const PdoScope&, const DictionaryIndex& dictionary, const Pdo&, const PdoEntry& entry) {
+    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+        const DictionaryIndex& dictionary = m.dictionary;
+        const PdoEntry& entry = m.entry;
         if (entry.bit_len == 0 || entry.bit_len_pos.line == 0) return;
         const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
         if (!target || target->bit_size == 0 || target->bit_size == entry.bit_len) return;
         // When BitLen already disagrees with the entry's own DataType, pdo-entry-bitlen-type reports it.
-        const EntryType type = entry_type(dictionary.dictionary(), entry);
+        const EntryType type = entry_type(m.types, entry);
         if (type.known && type.bit_size != 0 && type.bit_size != entry.bit_len) return;
         const Object* object = dictionary.object(entry.index);
         std::string written = entry.data_type && !entry.data_type->empty() ? " (" + *entry.data_type + ")" : "";
@@ -134,7 +151,10 @@ void check_entry_object_bitlen(const EsiDocument& document, RuleContext& context
 }
 
 void check_entry_not_mappable(const EsiDocument& document, RuleContext& context) {
-    for_each_mapped_entry(document, false, [&](const PdoScope&, const DictionaryIndex& dictionary, const Pdo& pdo, const PdoEntry& entry) {
+    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+        const DictionaryIndex& dictionary = m.dictionary;
+        const Pdo& pdo = m.pdo;
+        const PdoEntry& entry = m.entry;
         const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
         if (!target) return;
         const Object* object = dictionary.object(entry.index);

@@ -2,13 +2,6 @@
 
 namespace esi::rules {
 
-const Pdo* PdoScope::find_pdo(std::uint32_t index) const {
-    for (const auto* list : {rx_pdos, tx_pdos})
-        for (const auto& pdo : *list)
-            if (pdo.index == index) return &pdo;
-    return nullptr;
-}
-
 std::vector<PdoScope> pdo_scopes(const EsiDocument& document) {
     std::vector<PdoScope> out;
     for (const auto& info : document.infos) {

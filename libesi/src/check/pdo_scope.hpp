@@ -25,7 +25,6 @@ struct PdoScope {
         for (const auto& pdo : *rx_pdos) f(pdo);
         for (const auto& pdo : *tx_pdos) f(pdo);
     }
-    [[nodiscard]] const Pdo* find_pdo(std::uint32_t index) const;
 };
 
 // Every device and module of the document, in document order.

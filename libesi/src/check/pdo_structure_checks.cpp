@@ -1,6 +1,7 @@
 // pdo-… checks on the PDO list of a device or module: index ranges, SyncManager references,
 // duplicates, Exclude references and the 8-bit limits of the CoE mapping and assignment objects.
 #include <map>
+#include <unordered_set>
 
 #include "check/od_text.hpp"
 #include "check/pdo_checks.hpp"
@@ -112,10 +113,13 @@ void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
 
 void check_exclude_unknown(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
+        // Drives list every other PDO as excluded (Beckhoff AX2xxx): look indices up in a set.
+        std::unordered_set<std::uint32_t> indices;
+        scope.for_each_pdo([&](const Pdo& pdo) { indices.insert(pdo.index); });
         scope.for_each_pdo([&](const Pdo& pdo) {
             for (const auto& exclude : pdo.excludes) {
                 if (exclude.depend_on_slot.value_or(false) || exclude.depend_on_slot_group.value_or(false)) continue;
-                if (scope.find_pdo(exclude.index)) continue;
+                if (indices.count(exclude.index)) continue;
                 context.report(exclude.pos, pdo_name(pdo) + " excludes " + object_address(exclude.index) + ", which is not a PDO of this " +
                                                 (scope.device ? "device" : "module"));
             }
