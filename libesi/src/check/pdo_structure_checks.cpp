@@ -48,7 +48,7 @@ void check_index_range(const EsiDocument& document, RuleContext& context) {
                                   std::string(pdo.element_name()) + " mapping area " + range_text(area);
             const IndexRange& other = rx ? tx_mapping_area : rx_mapping_area;
             if (other.contains(pdo.index))
-                message += "; " + object_address(pdo.index) + " is a " + (rx ? "TxPdo" : "RxPdo") + " index, so the PDO is probably declared with the wrong element";
+                message += "; " + object_address(pdo.index) + (rx ? " is a TxPdo" : " is an RxPdo") + " index, so the PDO is probably declared with the wrong element";
             context.report(pdo.index_pos, std::move(message));
         });
     }
@@ -77,11 +77,12 @@ void check_sm_direction(const EsiDocument& document, RuleContext& context) {
             const SmRole expected = rx ? SmRole::outputs : SmRole::inputs;
             SmRole role = role_from_text(sm.type);
             if (role == SmRole::unknown) {
-                // Without a type text only the ControlByte's direction is reliable: devices without
-                // a mailbox run process data through one-buffer SMs (#x44/#x46), which look like
-                // mailbox SMs by their mode bits.
                 if (!sm.control_byte) return;
-                role = control_byte_is_write(*sm.control_byte) ? SmRole::outputs : SmRole::inputs;
+                // Without a type text the ControlByte decides. Devices without a mailbox run
+                // process data through one-buffer SMs (#x44/#x46) that look like mailbox SMs by
+                // their mode bits, so there only the direction counts.
+                role = device.mailbox ? sm_role(sm)
+                                      : (control_byte_is_write(*sm.control_byte) ? SmRole::outputs : SmRole::inputs);
             }
             if (role == expected) return;
             // MBoxOut, MBoxIn, Outputs and Inputs all take "an".
@@ -147,7 +148,7 @@ void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
                 for (const auto& entry : pdo.entries) {
                     if (entry.bit_len <= max_bit_len) continue;
                     context.report(entry.bit_len_pos.line ? entry.bit_len_pos : entry.pos,
-                                   "Entry " + entry_address(entry.index, entry.effective_subindex()) + " has BitLen " +
+                                   entry_label(entry) + " has BitLen " +
                                        std::to_string(entry.bit_len) + "; a PDO mapping entry stores the length in 8 bits (at most 255)");
                 }
             }
