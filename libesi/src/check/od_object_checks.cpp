@@ -1,5 +1,6 @@
 // od-… checks on the objects of a Dictionary: presence of the mandatory objects, duplicates,
 // flag values, and default/minimum/maximum values against the entry they belong to.
+#include <initializer_list>
 #include <string>
 #include <unordered_map>
 
@@ -22,9 +23,7 @@ struct MandatoryObject {
 // TF-2301 tests both.
 constexpr MandatoryObject mandatory_objects[] = {{0x1000, "Device type"}, {0x1018, "Identity"}};
 
-std::string number_text(const Number& n) {
-    return format_decimal(n);
-}
+std::string number_text(const Number& n) { return format_decimal(n); }
 
 // The flags a Dictionary declares: objects' and DataType SubItems'.
 template <class F>

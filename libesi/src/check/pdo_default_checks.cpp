@@ -4,6 +4,7 @@
 // communication area). A master that reads the objects (PdoUpload) and one that reads the ESI
 // must end up with the same process image; SOEM #402 shows what a swapped 0x1C12 does.
 #include <algorithm>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -30,13 +31,16 @@ std::optional<std::uint64_t> entry_default(const ObjectEntry& entry) {
 // The defaults of sub-indices 1..n of an array/record object, n being the default of
 // sub-index 0 when given. nullopt when the object states no such defaults.
 std::optional<std::vector<std::uint64_t>> listed_defaults(const ObjectLayout& layout) {
-    const ObjectEntry* count_entry = layout.entry(0);
+    std::array<const ObjectEntry*, 256> by_subindex{};
+    for (const auto& e : layout.entries)
+        if (e.subindex < by_subindex.size() && !by_subindex[e.subindex]) by_subindex[e.subindex] = &e;
+    const ObjectEntry* count_entry = by_subindex[0];
     const std::optional<std::uint64_t> count = count_entry ? entry_default(*count_entry) : std::nullopt;
     std::vector<std::uint64_t> values;
     bool any = count.has_value();
     for (std::uint32_t sub = 1; sub <= 255; ++sub) {
         if (count && sub > *count) break;
-        const ObjectEntry* e = layout.entry(sub);
+        const ObjectEntry* e = by_subindex[sub];
         const std::optional<std::uint64_t> value = e ? entry_default(*e) : std::nullopt;
         if (!value) {
             if (count) return std::nullopt;  // counted, but a counted entry has no default
