@@ -84,6 +84,22 @@ TEST(OdTypeIndex, CyclesAreFoundOnlyForTheirMembers) {
     EXPECT_FALSE(types.in_base_type_cycle(d.data_types[3])) << "a basic type described by itself";
 }
 
+TEST(OdRules, ALoopOfManyDataTypesIsOneFindingAtItsFirstMember) {
+    // DT1 -> DT2 -> ... -> DT500 -> DT1, declared in reverse order, plus a chain running into it.
+    std::string types;
+    for (int i = 500; i >= 1; --i)
+        types += "<DataType><Name>DT" + std::to_string(i) + "</Name><BaseType>DT" + std::to_string(i == 500 ? 1 : i + 1) +
+                 "</BaseType><BitSize>16</BitSize></DataType>\n";
+    types += "<DataType><Name>DT_TAIL</Name><BaseType>DT7</BaseType><BitSize>16</BitSize></DataType>\n";
+    const std::string xml = "<?xml version=\"1.0\"?>\n<EtherCATDict><Dictionary><DataTypes>\n" + types +
+                            "</DataTypes><Objects/></Dictionary></EtherCATDict>\n";
+    const auto found = findings_of(lint_text(xml), "od-type-cycle");
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].pos.line, 3u);  // DT500, the first member in the file
+    EXPECT_EQ(found[0].message.rfind("DataType DT500 is its own base type through BaseType: DT500 -> DT1 -> DT2", 0), 0u)
+        << found[0].message;
+}
+
 TEST(OdRules, EtherCATDictFilesAreChecked) {
     const std::string xml =
         "<?xml version=\"1.0\"?>\n"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "check/od_checks.hpp"
@@ -106,22 +107,28 @@ void check_nonstandard_type_name(const EsiDocument& document, RuleContext& conte
 }
 
 void check_type_cycle(const EsiDocument& document, RuleContext& context) {
+    const auto before = [](const SourcePos& a, const SourcePos& b) { return a.line < b.line || (a.line == b.line && a.column < b.column); };
     for (const auto& scope : dictionary_scopes(document)) {
         const TypeIndex types(*scope.dictionary);
+        std::unordered_set<const DataType*> seen;
         for (const auto& type : scope.dictionary->data_types) {
-            if (types.find(type.name) != &type || !types.in_base_type_cycle(type)) continue;
-            // One finding per cycle, at the member that comes first in the file.
-            std::vector<std::string> members{type.name};
-            bool first = true;
-            for (const DataType* t = types.find(*type.base_type); t && t != &type; t = types.find(*t->base_type)) {
-                members.push_back(t->name);
-                if (t->pos.line < type.pos.line || (t->pos.line == type.pos.line && t->pos.column < type.pos.column)) first = false;
+            if (types.find(type.name) != &type || !types.in_base_type_cycle(type) || seen.count(&type)) continue;
+            // One finding per loop, at the member that comes first in the file; the loop is
+            // walked once.
+            std::vector<const DataType*> members;
+            const DataType* first = &type;
+            for (const DataType* t = &type; t && seen.insert(t).second; t = types.find(*t->base_type)) {
+                members.push_back(t);
+                if (before(t->pos, first->pos)) first = t;
             }
-            if (!first) continue;
+            // Name the loop starting at its first member.
+            const auto at = std::find(members.begin(), members.end(), first);
+            std::rotate(members.begin(), at, members.end());
             std::string chain;
-            for (const auto& m : members) chain += m + " -> ";
-            chain += type.name;
-            context.report(type.name_pos.line ? type.name_pos : type.pos, "DataType " + type.name + " is its own base type through BaseType: " + chain);
+            for (const DataType* m : members) chain += m->name + " -> ";
+            chain += first->name;
+            context.report(first->name_pos.line ? first->name_pos : first->pos,
+                           "DataType " + first->name + " is its own base type through BaseType: " + chain);
         }
     }
 }

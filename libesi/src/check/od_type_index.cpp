@@ -1,24 +1,69 @@
 #include "check/od_type_index.hpp"
 
+#include <vector>
+
 #include "esi/data_types.hpp"
 #include "esi/number.hpp"
 
 namespace esi::rules {
 
-TypeIndex::TypeIndex(const Dictionary& dictionary) {
-    types_.reserve(dictionary.data_types.size());
-    for (const auto& t : dictionary.data_types) types_.emplace(std::string_view(t.name), &t);
-}
+namespace {
+// Real BaseType chains are one or two steps long (an enum on USINT); a bound keeps hostile
+// files with long chains linear.
+constexpr int max_base_type_steps = 32;
+}  // namespace
+
+TypeIndex::TypeIndex(const Dictionary& dictionary) { add(dictionary); }
 
 TypeIndex::TypeIndex(const Dictionary* dictionary) {
-    if (!dictionary) return;
-    types_.reserve(dictionary->data_types.size());
-    for (const auto& t : dictionary->data_types) types_.emplace(std::string_view(t.name), &t);
+    if (dictionary) add(*dictionary);
+}
+
+void TypeIndex::add(const Dictionary& dictionary) {
+    types_.reserve(dictionary.data_types.size());
+    for (const auto& t : dictionary.data_types) types_.emplace(std::string_view(t.name), &t);
+    find_cycles();
+}
+
+void TypeIndex::find_cycles() {
+    // Every DataType has at most one BaseType, so the types form chains that either end or run
+    // into one loop. One walk per chain, marking what it passed, finds every loop in linear time.
+    enum class State { unvisited, on_path, done };
+    std::unordered_map<const DataType*, State> state;
+    state.reserve(types_.size());
+    const auto next = [&](const DataType* t) -> const DataType* {
+        if (!t->base_type) return nullptr;
+        const std::string_view base = trim(*t->base_type);
+        const DataType* n = find(base);
+        // "UINT" defined with BaseType "UINT": a basic type described by itself, not a loop.
+        if (n == t && parse_type_name(base).kind != TypeName::Kind::named) return nullptr;
+        return n;
+    };
+    std::vector<const DataType*> path;
+    for (const auto& [name, start] : types_) {
+        if (state[start] != State::unvisited) continue;
+        path.clear();
+        const DataType* t = start;
+        while (t && state[t] == State::unvisited) {
+            state[t] = State::on_path;
+            path.push_back(t);
+            t = next(t);
+        }
+        if (t && state[t] == State::on_path) {
+            // The loop is the part of the path from t on.
+            bool in_loop = false;
+            for (const DataType* p : path) {
+                in_loop = in_loop || p == t;
+                if (in_loop) in_cycle_.insert(p);
+            }
+        }
+        for (const DataType* p : path) state[p] = State::done;
+    }
 }
 
 const BasicType* TypeIndex::basic(std::string_view name) const {
     name = trim(name);
-    for (std::size_t step = 0; step <= types_.size(); ++step) {
+    for (int step = 0; step < max_base_type_steps; ++step) {
         const DataType* t = find(name);
         if (!t) {
             const TypeName parsed = parse_type_name(name);
@@ -33,7 +78,7 @@ const BasicType* TypeIndex::basic(std::string_view name) const {
         }
         name = base;
     }
-    return nullptr;  // a BaseType cycle
+    return nullptr;  // a BaseType loop, or a chain too long to be real
 }
 
 const DataType* TypeIndex::find(std::string_view name) const {
@@ -79,20 +124,6 @@ std::optional<std::uint64_t> TypeIndex::bit_size(std::string_view name) const {
     return implied_bit_size(name);
 }
 
-bool TypeIndex::in_base_type_cycle(const DataType& type) const {
-    const DataType* current = &type;
-    // A chain that does not return within as many steps as there are types does not return.
-    for (std::size_t step = 0; step <= types_.size(); ++step) {
-        if (!current->base_type) return false;
-        const std::string_view base = trim(*current->base_type);
-        const DataType* next = find(base);
-        if (!next) return false;
-        // "UINT" defined with BaseType "UINT": a basic type described by itself, not a loop.
-        if (next == current && parse_type_name(base).kind != TypeName::Kind::named) return false;
-        if (next == &type) return true;
-        current = next;
-    }
-    return false;
-}
+bool TypeIndex::in_base_type_cycle(const DataType& type) const { return in_cycle_.count(&type) != 0; }
 
 }  // namespace esi::rules

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
@@ -39,7 +40,11 @@ public:
     [[nodiscard]] bool in_base_type_cycle(const DataType& type) const;
 
 private:
+    void add(const Dictionary& dictionary);
+    void find_cycles();
+
     std::unordered_map<std::string_view, const DataType*> types_;
+    std::unordered_set<const DataType*> in_cycle_;
 };
 
 }  // namespace esi::rules
