@@ -156,8 +156,9 @@ private:
                 previous = c.name();
             }
         }
-        // parse_embed_pcdata stores a lone text child in the element's own value.
-        if (e.text.empty() && n.value()[0] != '\0') e.text = n.value();
+        // parse_embed_pcdata stores the text that comes before any child element in the
+        // element's own value, not as a child: it is the start of the text (mixed content).
+        if (n.value()[0] != '\0') e.text.insert(0, n.value());
         return e;
     }
 
@@ -484,7 +485,9 @@ Pdo Reader::read_pdo(const pugi::xml_node n, PdoDirection direction) {
         if (name == "Index") {
             has_index = true;
             p.index_pos = pos_of(c);
-            p.index = u32(c).value_or(0);
+            const std::optional<std::uint32_t> index = u32(c);
+            p.index = index.value_or(0);
+            p.index_invalid = !index;
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
                 if (an == "DependOnSlot") p.index_depend_on_slot = boolean(a, c);
@@ -523,7 +526,10 @@ PdoEntry Reader::read_entry(const pugi::xml_node n) {
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "Index") {
             has_index = true;
-            e.index = u32(c).value_or(0);
+            const std::optional<std::uint32_t> index = u32(c);
+            e.index = index.value_or(0);
+            e.index_invalid = !index;
+            e.index_pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
                 if (an == "DependOnSlot") e.index_depend_on_slot = boolean(a, c);
@@ -930,6 +936,12 @@ Object Reader::read_object(const pugi::xml_node n) {
             has_index = true;
             o.index = u32(c).value_or(0);
             o.index_pos = pos_of(c);
+            for (const auto a : c.attributes()) {
+                const std::string_view an = a.name();
+                if (an == "DependOnSlot") o.index_depend_on_slot = boolean(a, c);
+                else if (an == "DependOnSlotGroup") o.index_depend_on_slot_group = boolean(a, c);
+                else if (an == "OverwrittenByModule") o.index_overwritten_by_module = boolean(a, c);
+            }
         } else if (name == "Name") o.names.push_back(localized(c));
         else if (name == "Comment") o.comments.push_back(localized(c));
         else if (name == "Type") {
