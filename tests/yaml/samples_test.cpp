@@ -304,3 +304,85 @@ TEST(YamlSamples, LoadingIsDeterministic) {
             EXPECT_EQ(da.dictionary()->data_types[i].name, db.dictionary()->data_types[i].name);
     }
 }
+
+// ---- with the ESI writer ---------------------------------------------------------------------
+
+#include "esi/lint/xsd.hpp"
+#include "esi/xml/reader.hpp"
+#include "esi/xml/writer.hpp"
+
+namespace {
+
+EffectiveConfig config_with_limits(const DeviceSource& s) {
+    EffectiveConfig config;
+    for (const auto& [selector, limits] : s.device_limits)
+        config.device_limits.emplace_back(std::vector<std::uint32_t>{selector.product_code}, limits);
+    return config;
+}
+
+}  // namespace
+
+TEST(YamlSamples, WrittenEsiIsByteIdenticalOnReRun) {
+    for (const char* name : samples) {
+        SCOPED_TRACE(name);
+        const DeviceSource a = load_sample(name);
+        const DeviceSource b = load_sample(name);
+        ASSERT_TRUE(a.document && b.document);
+        const std::string xml = write_esi(*a.document);
+        EXPECT_EQ(xml, write_esi(*b.document));
+        EXPECT_NE(xml.find("<EtherCATInfo"), std::string::npos);
+    }
+}
+
+TEST(YamlSamples, WrittenEsiValidatesAgainstTheEtgSchema) {
+    ESI_REQUIRE_CORPUS();
+    Diagnostics load_problems;
+    const auto schemas =
+        SchemaSet::load(esi::test::shared_dir() / "corpus" / "schema" / "v1.17_siitool-2022", load_problems);
+    ASSERT_TRUE(schemas) << describe(load_problems);
+    for (const char* name : samples) {
+        SCOPED_TRACE(name);
+        const DeviceSource s = load_sample(name);
+        ASSERT_TRUE(s.document);
+        const SourceText xml(std::string(name) + ".xml", write_esi(*s.document));
+        const Diagnostics problems = schemas->validate(xml);
+        EXPECT_TRUE(problems.empty()) << describe(problems) << "\n" << xml.text().substr(0, 4000);
+    }
+}
+
+TEST(YamlSamples, EsiLintFindsNothingInTheWrittenEsi) {
+    for (const char* name : samples) {
+        SCOPED_TRACE(name);
+        const DeviceSource s = load_sample(name);
+        ASSERT_TRUE(s.document);
+        const std::string xml = write_esi(*s.document);
+        const ReadResult back = read_esi(xml, std::string(name) + ".xml");
+        ASSERT_TRUE(back.document) << describe(back.diagnostics);
+        EXPECT_TRUE(back.diagnostics.empty()) << describe(back.diagnostics);
+        const Diagnostics found = run_rules(*back.document, config_with_limits(s));
+        EXPECT_EQ(found.count(Severity::error) + found.count(Severity::warning), 0u) << describe(found);
+    }
+}
+
+TEST(YamlSamples, TheSeedLimitsAreEnforced) {
+    // The servo manuals allow four RxPDOs (§6.1.1) and BitLen 8/16/32 (Tabelle 14): a fifth PDO
+    // and a BOOL entry break the limits the sample declares.
+    std::string text = esi::test::read_text(sample_path("servo-item-c-series.yaml"));
+    const std::string anchor = "      - { index: 0x1603, name: Outputs, fixed: true, entries: [0x6071] }\n";
+    ASSERT_NE(text.find(anchor), std::string::npos);
+    text.insert(text.find(anchor) + anchor.size(),
+                "      - { index: 0x1604, name: Outputs, fixed: true, assigned: false, entries: [{ object: 0x6040, bit_len: 16 }, pad1] }\n");
+    const DeviceSource s = esi::test::load_yaml(text, "servo.yaml");
+    ASSERT_TRUE(s.document) << describe(s.diagnostics);
+    const Diagnostics found = run_rules(*s.document, config_with_limits(s));
+    std::set<std::string> rules;
+    for (const auto& d : found)
+        if (d.severity == Severity::error) rules.insert(d.rule);
+    EXPECT_TRUE(rules.count("profile-max-pdos")) << describe(found);
+    EXPECT_TRUE(rules.count("profile-pdo-index-range")) << describe(found);
+    // The finding points at the YAML line of the fifth PDO.
+    for (const auto& d : found) {
+        if (d.rule != "profile-pdo-index-range") continue;
+        EXPECT_NE(s.source->line(d.pos.line).find("0x1604"), std::string_view::npos) << d.pos.line;
+    }
+}
