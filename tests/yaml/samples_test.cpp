@@ -282,6 +282,8 @@ TEST(YamlSamples, ModularCouplerHasModulesAndSlots) {
     EXPECT_EQ(ai.tx_pdos[0].entries[1].data_type, "INT");
     ASSERT_TRUE(ai.profile && ai.profile->dictionary);
     EXPECT_NE(ai.profile->dictionary->find_data_type("INT"), nullptr);
+    ASSERT_NE(ai.profile->dictionary->find_object(0x6000), nullptr);
+    EXPECT_TRUE(ai.profile->dictionary->find_object(0x6000)->index_depend_on_slot.value_or(false));
     // The coupler's own PD SMs stay enabled for the modules' data.
     EXPECT_EQ(d.sms[2].enable, 1u);
     EXPECT_EQ(d.sms[3].enable, 1u);

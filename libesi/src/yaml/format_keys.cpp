@@ -62,7 +62,8 @@ constexpr K dc_time[] = {"value", "factor", "input", "output_delay_time", "input
                       "safety_mapping", "attribute", "transition", "sdo_access", "flags_xml"
 #define ESI_INFO_KEYS "default", "min", "max", "default_data", "min_data", "max_data", "default_string", "display_name", \
                       "unit", "info_xml"
-constexpr K object[] = {"name", "comment", "type", "bit_size", "array", "entries", "enum", ESI_FLAG_KEYS, ESI_INFO_KEYS, "xml"};
+constexpr K object[] = {"name", "comment", "type", "bit_size", "array", "entries", "enum", ESI_FLAG_KEYS, ESI_INFO_KEYS,
+                        "index_depend_on_slot", "index_depend_on_slot_group", "index_overwritten_by_module", "xml"};
 constexpr K object_entry[] = {"name", "comment", "type", "bit_size", "bit_offset", ESI_FLAG_KEYS, ESI_INFO_KEYS, "xml"};
 constexpr K data_type[] = {"name", "index", "base_type", "bit_size", "comment", "array", "sub_items", "enum", "xml"};
 constexpr K array_info[] = {"lower_bound", "elements"};

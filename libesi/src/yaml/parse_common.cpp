@@ -59,7 +59,10 @@ ObjectNames index_object_names(const Dictionary& dictionary) {
 void SourceParser::images(const Fields& f, Images& out) {
     if (const Node* n = f.find("image_data")) out.image_data16x14 = r_.hex(*n, "image_data");
     if (const Node* n = f.find("image_file")) out.image_file16x14 = r_.text(*n, "image_file");
-    if (const Node* n = f.find("image16x14")) out.image16x14 = r_.text(*n, "image16x14");
+    if (const Node* n = f.find("image16x14")) {
+        out.image16x14 = r_.text(*n, "image16x14");
+        out.image16x14_pos = pos_of(*n);
+    }
     const int given = (out.image_data16x14 ? 1 : 0) + (out.image_file16x14 ? 1 : 0) + (out.image16x14 ? 1 : 0);
     if (given > 1)
         r_.error(f.node(), "yaml-conflict", "give one of image_data, image_file and image16x14 (the ESI schema allows one image)");
@@ -351,6 +354,7 @@ std::optional<PdoEntry> SourceParser::pdo_entry(const Node& node, const ObjectNa
             return std::nullopt;
         }
         e.index = ref->index;
+        e.index_pos = e.pos;
         e.subindex = ref->subindex;
         if (e.index == 0) {
             r_.error(node, "yaml-value", "index 0 is padding; write padding as pad8, pad16 … or {pad: bits}");
@@ -374,6 +378,7 @@ std::optional<PdoEntry> SourceParser::pdo_entry(const Node& node, const ObjectNa
         auto ref = object_ref(*f->find("object"), names, "object");
         if (!ref) return std::nullopt;
         e.index = ref->index;
+        e.index_pos = pos_of(*f->find("object"));
         e.subindex = ref->subindex;
         if (const Node* n = f->find("subindex")) {
             const auto sub = r_.integer<std::uint32_t>(*n, "subindex", 0, 255);

@@ -282,6 +282,9 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
     const std::string what = "object " + hex4(o.index);
     if (r_.require(*f, "name", what)) o.names = names_of(*f, "name");
     o.comments = names_of(*f, "comment");
+    r_.optional_bool(*f, "index_depend_on_slot", o.index_depend_on_slot);
+    r_.optional_bool(*f, "index_depend_on_slot_group", o.index_depend_on_slot_group);
+    r_.optional_bool(*f, "index_overwritten_by_module", o.index_overwritten_by_module);
     o.flags = flags(*f);
     std::string type;
     if (const Node* n = f->find("type")) {
