@@ -380,3 +380,39 @@ TEST(TypedValue, EncodesLittleEndianInTheObjectsSize) {
     text.text = "abcd";
     EXPECT_FALSE(encode_value(text, type("STRING(3)", 24)).ok());
 }
+
+TEST(YamlFormat, ModuleDescriptionFiles) {
+    const DeviceSource s = load_ok(R"(root_element: EtherCATModule
+vendor: { id: 2, name: Example }
+modules:
+  - type: M-1
+    ident: 0x100
+    name: Module 1
+    txpdo: [{ index: 0x1A00, entries: [{ object: 0x6000, bit_len: 16, data_type: INT, name: Value }] }]
+)");
+    ASSERT_TRUE(s.document);
+    EXPECT_EQ(s.document->kind, DocumentKind::ethercat_module);
+    EXPECT_TRUE(s.document->infos[0].devices.empty());
+    ASSERT_EQ(s.document->infos[0].modules.size(), 1u);
+    const DeviceSource bad = load_yaml(R"(root_element: EtherCATModul
+vendor: { id: 2, name: Example }
+devices: []
+)");
+    EXPECT_FALSE(bad.document);
+}
+
+TEST(YamlFormat, PaddingKeepsASubindexAsWritten) {
+    const DeviceSource s = load_ok(vendor + R"(devices:
+  - type: D
+    name: Device
+    product_code: 1
+    revision: 1
+    rxpdo: [{ index: 0x1600, entries: [{ pad: 8, subindex: 0 }, pad8] }]
+)");
+    ASSERT_TRUE(s.document);
+    const auto& entries = only_device(s).rx_pdos[0].entries;
+    ASSERT_EQ(entries.size(), 2u);
+    EXPECT_EQ(entries[0].subindex, 0u);
+    EXPECT_FALSE(entries[1].subindex.has_value());
+    EXPECT_EQ(entries[0].bit_len, 8u);
+}

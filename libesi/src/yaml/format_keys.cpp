@@ -8,7 +8,7 @@ namespace {
 
 using K = std::string_view;
 
-constexpr K root[] = {"esi_version", "vendor", "groups", "devices", "modules", "xml", "descriptions_xml"};
+constexpr K root[] = {"root_element", "esi_version", "vendor", "groups", "devices", "modules", "xml", "descriptions_xml"};
 constexpr K vendor[] = {"id",         "name",       "comment",     "url",         "description_url", "image_data",
                         "image_file", "image16x14", "unique_name", "file_version", "xml"};
 constexpr K group[] = {"type", "name", "comment", "sort_order", "parent_group", "image_data", "image_file", "image16x14", "xml"};

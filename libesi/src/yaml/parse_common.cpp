@@ -372,8 +372,9 @@ std::optional<PdoEntry> SourceParser::pdo_entry(const Node& node, const ObjectNa
         e.index = 0;
         e.bit_len = r_.integer<std::uint32_t>(*n, "pad", 1, 255).value_or(0);
         e.bit_len_pos = pos_of(*n);
-        for (const char* k : {"subindex", "bit_len", "data_type"})
-            if (f->has(k)) r_.error(*f->key_node(k), "yaml-conflict", "a padding entry has no " + std::string(k));
+        if (f->has("bit_len")) r_.error(*f->key_node("bit_len"), "yaml-conflict", "'pad' is the padding's bit length; drop 'bit_len'");
+        // Written files often spell padding <Index>0</Index><SubIndex>0</SubIndex>; keep that.
+        r_.optional_integer<std::uint32_t>(*f, "subindex", e.subindex, 0, 255);
     } else {
         auto ref = object_ref(*f->find("object"), names, "object");
         if (!ref) return std::nullopt;

@@ -64,6 +64,14 @@ std::optional<EtherCATInfo> SourceParser::parse(const Node& root, std::vector<Pa
     info.has_descriptions = true;
     info.descriptions_pos = info.pos;
     r_.optional_text(*f, "esi_version", info.version);
+    // A module description file (EtherCATModule root: Vendor and Modules, ETG.2000) has no devices.
+    module_file_ = false;
+    if (const Node* n = f->find("root_element")) {
+        const auto root_element = r_.text(*n, "root_element");
+        if (root_element == "EtherCATModule") module_file_ = true;
+        else if (root_element && *root_element != "EtherCATInfo")
+            r_.error(*n, "yaml-value", "'root_element' is EtherCATInfo (the default) or EtherCATModule, not '" + *root_element + "'");
+    }
     if (r_.require(*f, "vendor", "the device source")) info.vendor = vendor(*f->find("vendor"));
     if (const Node* n = f->find("groups")) {
         if (auto items = r_.sequence(*n, "groups")) {
@@ -97,7 +105,11 @@ std::optional<EtherCATInfo> SourceParser::parse(const Node& root, std::vector<Pa
     }
     const std::optional<std::uint32_t> vendor_id = info.vendor ? info.vendor->id : std::nullopt;
     const std::string* only_group = info.groups.size() == 1 ? &info.groups.front().type : nullptr;
-    if (r_.require(*f, "devices", "the device source")) {
+    if (module_file_) {
+        if (f->has("devices")) r_.error(*f->key_node("devices"), "yaml-conflict", "a module description file (EtherCATModule) has no devices");
+        if (!f->has("modules")) r_.error(f->node(), "yaml-missing-key", "a module description file (EtherCATModule) needs 'modules'");
+        info.has_descriptions = false;
+    } else if (r_.require(*f, "devices", "the device source")) {
         if (auto items = r_.sequence(*f->find("devices"), "devices")) {
             if (items->empty()) r_.error(*f->find("devices"), "yaml-value", "'devices' lists at least one device");
             std::map<std::pair<std::uint32_t, std::uint32_t>, SourcePos> identities;
@@ -195,7 +207,7 @@ DeviceSource load_device_source(std::string_view bytes, const std::string& path,
         if (!info || diagnostics.has_errors()) return out;
 
         EsiDocument document;
-        document.kind = DocumentKind::ethercat_info;
+        document.kind = parser.module_file() ? DocumentKind::ethercat_module : DocumentKind::ethercat_info;
         document.path = path;
         document.encoding = SourceEncoding::utf8;
         document.root_pos = info->pos;

@@ -53,6 +53,8 @@ public:
     // The whole file; nullopt when the root is not a mapping.
     std::optional<EtherCATInfo> parse(const Node& root, std::vector<ParsedDevice>& devices,
                                       std::vector<ParsedModule>& modules);
+    // The source declared `root_element: EtherCATModule`.
+    [[nodiscard]] bool module_file() const { return module_file_; }
 
 private:
     // ---- parse_common.cpp --------------------------------------------------------------------
@@ -106,6 +108,7 @@ private:
 
     Reader& r_;
     const SourceText& source_;
+    bool module_file_ = false;
 };
 
 // Objects a device or module declares, indexed by primary name (ambiguous names are marked).
