@@ -293,3 +293,49 @@ TEST(YamlBadInput, LimitsAfterUnicodeTextKeepTheirColumns) {
         "devices: [{ type: D, name: Größe, product_code: 1, revision: 2, group: G, limits: { max_pdox: 1 } }]\n");
     expect_error(s, "config", 2, 85, "did you mean 'max_pdos'?");
 }
+
+TEST(YamlBadInput, EscapeHatchXmlMustBeWellFormed) {
+    const DeviceSource s = load_yaml(header + "    xml: { elements: [\"<Info><Open></Info>\"] }\n");
+    expect_error(s, "yaml-xml", 9, 23, "not well-formed XML");
+}
+
+TEST(YamlBadInput, PdoEntryDataTypeContradictingTheObject) {
+    const DeviceSource s = load_yaml(header + R"(    objects:
+      0x6000: { name: In, type: INT, access: ro, pdo: tx }
+    txpdo:
+      - { index: 0x1A00, entries: [{ object: 0x6000, data_type: UINT }] }
+)");
+    expect_error(s, "derive-pdo-entry-type", 12, 65, "has data_type UINT, but In is INT");
+}
+
+TEST(YamlBadInput, PdoAssignedToAnSmTheDeviceDoesNotHave) {
+    const DeviceSource s = load_yaml(header + R"(    objects:
+      0x6000: { name: In, type: INT, access: ro, pdo: tx }
+    sms: [{ type: MBoxOut }, { type: MBoxIn }]
+    txpdo:
+      - { index: 0x1A00, entries: [0x6000] }
+)");
+    expect_error(s, "derive-pdo-assignment", 13, 9, "has no Inputs SM");
+}
+
+TEST(YamlBadInput, SyncManagerBeyondTheEscAddressSpace) {
+    const DeviceSource s = load_yaml(header + "    sms:\n      - { type: MBoxOut }\n      - { type: MBoxIn, address: 0xFFC0 }\n");
+    expect_error(s, "derive-sm-address", 11, 9, "beyond the 64 KiB");
+}
+
+TEST(YamlBadInput, OneImageOnly) {
+    const DeviceSource s = load_yaml(header + "    image_file: a.bmp\n    image16x14: b.bmp\n");
+    expect_error(s, "yaml-conflict", 4, 5, "one of image_data, image_file and image16x14");
+}
+
+TEST(YamlBadInput, EepromImageExcludesTheStructuredForm) {
+    const DeviceSource s = load_yaml(header + "    eeprom: { data: 0011, size: 2048 }\n");
+    expect_error(s, "yaml-conflict", 9, 27, "complete EEPROM image");
+}
+
+TEST(YamlBadInput, MissingFileIsAnIoError) {
+    const DeviceSource s = load_device_source_file(esi::test::source_dir() / "samples" / "no-such-device.yaml");
+    EXPECT_FALSE(s.document);
+    ASSERT_EQ(s.diagnostics.size(), 1u);
+    EXPECT_EQ(s.diagnostics.items()[0].rule, "io-error");
+}

@@ -3,7 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include <regex>
+#include <cctype>
+
 
 #include "esi/check/effective_config.hpp"
 #include "esi/lint/lint.hpp"
@@ -157,14 +158,15 @@ TEST(YamlSamples, InverterPlacesParametersByTheStoeberRule) {
     ASSERT_TRUE(s.document);
     const Device& d = only_device(s);
     // [002 §7.2.4]: index = 0x2000 + 0x200 * (group - 1) + line, for every object named "A180 …".
-    const std::regex coordinate("^([A-Z])([0-9]+) .*");
     int checked = 0;
     for (const auto& o : d.dictionary()->objects) {
-        std::smatch m;
+        // Names that start with a coordinate: a group letter, the line number, a blank.
         const std::string name = primary_text(o.names);
-        if (!std::regex_match(name, m, coordinate)) continue;
-        const unsigned group = static_cast<unsigned>(m[1].str()[0] - 'A' + 1);
-        const unsigned line = static_cast<unsigned>(std::stoul(m[2].str()));
+        std::size_t digits = 1;
+        while (digits < name.size() && std::isdigit(static_cast<unsigned char>(name[digits]))) ++digits;
+        if (name.size() < 3 || name[0] < 'A' || name[0] > 'Z' || digits == 1 || digits >= name.size() || name[digits] != ' ') continue;
+        const unsigned group = static_cast<unsigned>(name[0] - 'A' + 1);
+        const unsigned line = static_cast<unsigned>(std::stoul(name.substr(1, digits - 1)));
         EXPECT_EQ(o.index, 0x2000u + 0x200u * (group - 1) + line) << name;
         ++checked;
     }

@@ -154,8 +154,7 @@ void derive_mapping_objects(Device& device, const DeviceIntent& intent, Context&
     }
 }
 
-void derive_assignment_objects(Device& device, const DeviceIntent& intent, Context& context) {
-    (void)intent;
+void derive_assignment_objects(Device& device, Context& context) {
     Dictionary* d = dictionary_of(device, false);
     if (!d) return;
     const bool pdo_assign = device.mailbox && device.mailbox->coe && device.mailbox->coe->pdo_assign.value_or(false);

@@ -82,7 +82,7 @@ void derive_device(Device& device, const DeviceIntent& intent, const std::string
     if (o.sync_managers) derive_sync_managers(device, intent, context);
     if (o.fmmus && device.fmmus.empty()) derive_fmmus(device);
     if (o.mapping_objects) derive_mapping_objects(device, intent, context);
-    if (o.assignment_objects) derive_assignment_objects(device, intent, context);
+    if (o.assignment_objects) derive_assignment_objects(device, context);
     if (o.sm_types_object) derive_sm_types_object(device, context);
 
     Dictionary* dictionary = dictionary_of(device, false);

@@ -45,7 +45,7 @@ void derive_pdo_assignment(Device& device, const DeviceIntent& intent, const SmP
 void derive_sync_managers(Device& device, const DeviceIntent& intent, Context& context);
 void derive_fmmus(Device& device);
 void derive_mapping_objects(Device& device, const DeviceIntent& intent, Context& context);
-void derive_assignment_objects(Device& device, const DeviceIntent& intent, Context& context);
+void derive_assignment_objects(Device& device, Context& context);
 void derive_sm_types_object(Device& device, Context& context);
 void derive_init_values(std::vector<InitCmd>& init_cmds, const std::vector<InitCmdValue>& values, const Dictionary* dictionary,
                         Context& context);

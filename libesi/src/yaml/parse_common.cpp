@@ -245,7 +245,7 @@ void SourceParser::init_cmds(const Node& node, Context context, const ObjectName
 }
 
 std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, MailboxLayout* layout,
-                                             const ObjectNames& names, std::vector<InitCmdValue>* coe_values) {
+                                             const ObjectNames& names) {
     const auto f = r_.mapping(node, context, "mailbox");
     if (!f) return std::nullopt;
     Mailbox m;
@@ -332,7 +332,6 @@ std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, 
             (std::string_view(key) == "foe" ? m.foe : m.voe) = std::move(plain);
         }
     }
-    (void)coe_values;
     return m;
 }
 

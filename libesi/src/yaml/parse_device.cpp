@@ -353,7 +353,7 @@ std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional
         d.profiles.front().dictionary = std::move(dict);
     }
 
-    if (const Node* n = f->find("mailbox")) d.mailbox = mailbox(*n, Context::mailbox, &intent.mailbox, names, nullptr);
+    if (const Node* n = f->find("mailbox")) d.mailbox = mailbox(*n, Context::mailbox, &intent.mailbox, names);
     if (const Node* n = f->find("init")) {
         if (!d.mailbox || !d.mailbox->coe) {
             r_.error(*f->key_node("init"), "yaml-missing-key", "'init' holds CoE InitCmds; the device needs 'mailbox: {coe: …}'");

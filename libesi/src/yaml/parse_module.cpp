@@ -37,7 +37,7 @@ std::optional<ParsedModule> SourceParser::module(const Node& node) {
         names = dictionary(*f, dict);
         m.profile->dictionary = std::move(dict);
     }
-    if (const Node* n = f->find("mailbox")) m.mailbox = mailbox(*n, Context::module_mailbox, nullptr, names, nullptr);
+    if (const Node* n = f->find("mailbox")) m.mailbox = mailbox(*n, Context::module_mailbox, nullptr, names);
     if (const Node* n = f->find("init")) {
         if (!m.mailbox || !m.mailbox->coe)
             r_.error(*f->key_node("init"), "yaml-missing-key", "'init' holds CoE InitCmds; the module needs 'mailbox: {coe: …}'");

@@ -67,8 +67,7 @@ private:
     std::optional<Profile> profile(const Node& node);
     void init_cmds(const Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
                    std::vector<InitCmdValue>* values);
-    std::optional<Mailbox> mailbox(const Node& node, Context context, MailboxLayout* layout, const ObjectNames& names,
-                                   std::vector<InitCmdValue>* coe_values);
+    std::optional<Mailbox> mailbox(const Node& node, Context context, MailboxLayout* layout, const ObjectNames& names);
     std::vector<Pdo> pdos(const Node& node, PdoDirection direction, const ObjectNames& names, std::vector<bool>* assign);
     std::optional<PdoEntry> pdo_entry(const Node& node, const ObjectNames& names);
 

@@ -205,7 +205,6 @@ std::unique_ptr<Tree> Tree::parse(std::string_view text, const std::string& path
     }
     yaml_parser_set_input_string(&parser, reinterpret_cast<const unsigned char*>(text.data()), text.size());
     yaml_parser_set_encoding(&parser, YAML_UTF8_ENCODING);
-    const std::size_t errors_before = diagnostics.count(Severity::error);
     bool ok = true;
     for (;;) {
         yaml_event_t event;
@@ -245,7 +244,6 @@ std::unique_ptr<Tree> Tree::parse(std::string_view text, const std::string& path
         return nullptr;
     }
     // Duplicate keys are errors, but the tree is still safe to walk for further findings.
-    (void)errors_before;
     return tree;
 }
 
