@@ -30,7 +30,7 @@ struct DocumentView {
 // The document view as --dump-model prints it: the root fields plus "devices".
 [[nodiscard]] Json document_json(const DocumentView& view);
 
-// What a per-device template sees: the root fields plus "device".
-[[nodiscard]] Json device_context(const DocumentView& view, const DeviceViewEntry& device);
+// What a per-device template sees: the root fields plus "device" (taken from `device`).
+[[nodiscard]] Json device_context(const DocumentView& view, DeviceViewEntry&& device);
 
 }  // namespace esi::codegen

@@ -179,12 +179,13 @@ GenerateResult generate_outputs(const EsiDocument& document, const GenerateOptio
         }
         const auto* tmpl = load_template(file.template_name);
         if (!tmpl) continue;
-        const DeviceViewEntry* device = nullptr;
-        for (const auto& d : view.devices)
+        DeviceViewEntry* device = nullptr;
+        for (auto& d : view.devices)
             if (planned_device && d.device == planned_device->device) device = &d;
         if (!device) continue;
         if (device != context_device) {
-            context = std::make_unique<MustacheContext>(device_context(view, *device));
+            // Each device's view is used once: it moves into its context instead of being copied.
+            context = std::make_unique<MustacheContext>(device_context(view, std::move(*device)));
             context_device = device;
         }
         Rendered rendered = context->render(tmpl->second);

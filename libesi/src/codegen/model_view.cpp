@@ -56,9 +56,9 @@ Json document_json(const DocumentView& view) {
     return j;
 }
 
-Json device_context(const DocumentView& view, const DeviceViewEntry& device) {
+Json device_context(const DocumentView& view, DeviceViewEntry&& device) {
     Json j = view.root;
-    j["device"] = device.view;
+    j["device"] = std::move(device.view);
     return j;
 }
 

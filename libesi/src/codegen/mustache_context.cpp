@@ -22,11 +22,15 @@ mu::data convert(const Json& value) {
         }
         case Json::value_t::array: {
             mu::data out(mu::data::type::list);
+            // kainjow offers only const access to a list and copies on push_back, and its move
+            // constructor is not noexcept, so a growing vector would deep-copy every item on each
+            // reallocation. The list owns its items (writing through the reference is sound):
+            // reserve once, append cheap placeholders and move each converted item into place.
+            auto& items = const_cast<mu::list&>(out.list_value());
+            items.reserve(value.size());
             for (const auto& child : value) {
-                // push_back copies; placing an empty item and moving into it avoids copying the
-                // subtree (the list owns its items, so writing through the reference is sound).
                 out.push_back(mu::data(false));
-                const_cast<mu::data&>(out.list_value().back()) = convert(child);
+                items.back() = convert(child);
             }
             return out;
         }
