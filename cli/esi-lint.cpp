@@ -40,8 +40,8 @@ int main(int argc, char** argv) {
     bool color = false;
     unsigned jobs = 0;
     app.add_option("paths", paths, "ESI files, directories (recursive *.xml) or - for stdin");
-    app.add_option("--format", format, "text, json, sarif or github (with --list-rules: text or json)")
-        ->check(CLI::IsMember({"text", "json", "sarif", "github"}));
+    app.add_option("--format", format, "text, json, sarif or github (with --list-rules: text, json or markdown)")
+        ->check(CLI::IsMember({"text", "json", "sarif", "github", "markdown"}));
     app.add_option("--fail-on", fail_on, "lowest severity that makes the exit code 1")
         ->check(CLI::IsMember({"error", "warning", "info", "never"}));
     app.add_option("--config", config, "config file (default: nearest .esi-lint.yaml upwards from each file)");
@@ -62,8 +62,14 @@ int main(int argc, char** argv) {
     }
 
     if (list_rules) {
-        std::cout << (format == "json" ? esi::render_rule_list_json() : esi::render_rule_list_text());
+        std::cout << (format == "json"       ? esi::render_rule_list_json()
+                       : format == "markdown" ? esi::render_rule_list_markdown()
+                                              : esi::render_rule_list_text());
         return exit_clean;
+    }
+    if (format == "markdown") {
+        std::cerr << "esi-lint: --format markdown is only for --list-rules\n";
+        return exit_usage;
     }
     if (!explain.empty()) {
         const std::string text = esi::render_rule_explanation(explain);

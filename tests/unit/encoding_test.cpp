@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "esi/encoding.hpp"
+#include "esi/source_text.hpp"
 
 using esi::decode_xml_bytes;
 using esi::SourceEncoding;
@@ -68,4 +69,30 @@ TEST(Encoding, RejectsOverlongAndSurrogatesInUtf8) {
     EXPECT_FALSE(esi::is_valid_utf8("\xED\xA0\x80"));
     EXPECT_FALSE(esi::is_valid_utf8("\xF4\x90\x80\x80"));
     EXPECT_TRUE(esi::is_valid_utf8("plain ascii that is longer than eight bytes \xF0\x9F\x98\x80"));
+}
+
+TEST(Encoding, OwnedDecodingGivesTheSameResultAsCopying) {
+    for (const std::string& input : {std::string("\xEF\xBB\xBF<a>\xC3\xA4</a>"), std::string("<a>ok\xDF" "er</a>"),
+                                    std::string("<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><a>\xE4</a>"),
+                                    std::string("\xFF\xFE<\0a\0/\0>\0", 10)}) {
+        const auto copied = esi::decode_xml_bytes(input);
+        const auto owned = esi::decode_xml_bytes_owned(input);
+        EXPECT_EQ(copied.utf8, owned.utf8);
+        EXPECT_EQ(copied.encoding, owned.encoding);
+        EXPECT_EQ(copied.first_invalid_offset, owned.first_invalid_offset);
+    }
+}
+
+TEST(SourceText, PositionsCountCodePointsAndLines) {
+    const std::string text = "ab\n\xC3\xA4\xC3\xB6x\r\n\n" + std::string(40, 'y') + "\xE2\x82\xAC" + "z";
+    esi::SourceText source("t.xml", text);
+    EXPECT_EQ(source.position_of(0), (esi::SourcePos{1, 1}));
+    EXPECT_EQ(source.position_of(7), (esi::SourcePos{2, 3}));  // 'x' after two 2-byte letters
+    EXPECT_EQ(source.position_of(text.size() - 1), (esi::SourcePos{4, 42}));
+    esi::PositionCursor cursor(source);
+    for (std::size_t offset : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{11}, text.size() - 1, std::size_t{3}})
+        EXPECT_EQ(cursor.position_of(offset), source.position_of(offset)) << offset;
+    EXPECT_EQ(source.line(2), "\xC3\xA4\xC3\xB6x");
+    EXPECT_EQ(esi::count_newlines(text), 3u);
+    EXPECT_EQ(esi::count_code_points("\xE2\x82\xAC" "abcdefghijk\xC3\xA4"), 13u);
 }

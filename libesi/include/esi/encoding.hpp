@@ -18,8 +18,8 @@ enum class SourceEncoding { utf8, utf8_bom, utf16le, utf16be, latin1, windows125
 struct DecodedText {
     std::string utf8;
     SourceEncoding encoding = SourceEncoding::utf8;
-    // Byte offset of the first invalid sequence in the input (npos when the input was clean).
-    // Invalid bytes are replaced with U+FFFD so that reading can go on.
+    // Byte offset in `utf8` of the replacement for the first invalid sequence (npos when the
+    // input was clean). Invalid bytes are replaced with U+FFFD so that reading can go on.
     std::size_t first_invalid_offset = std::string::npos;
     std::string declared;  // encoding named in the XML declaration, as written
 };
@@ -27,6 +27,8 @@ struct DecodedText {
 // Detects the encoding from the BOM or the XML declaration and converts to UTF-8.
 // Never fails: undecodable input is replaced and reported through first_invalid_offset.
 [[nodiscard]] DecodedText decode_xml_bytes(std::string_view bytes);
+// Same, reusing the buffer when the input already is valid UTF-8 (the common case).
+[[nodiscard]] DecodedText decode_xml_bytes_owned(std::string bytes);
 
 // True when text is valid UTF-8 (no overlongs, no surrogates, nothing above U+10FFFF).
 [[nodiscard]] bool is_valid_utf8(std::string_view text, std::size_t* first_bad = nullptr);

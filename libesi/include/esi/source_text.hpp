@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,6 +17,8 @@ class SourceText {
 public:
     SourceText() = default;
     SourceText(std::string path, std::string utf8);
+    SourceText(const SourceText&) = delete;
+    SourceText& operator=(const SourceText&) = delete;
 
     [[nodiscard]] const std::string& path() const { return path_; }
     [[nodiscard]] const std::string& text() const { return text_; }
@@ -25,18 +28,26 @@ public:
     [[nodiscard]] SourcePos position_of(std::size_t offset) const;
     // Index of the 1-based line holding a byte offset, and the byte offset where a line starts.
     [[nodiscard]] std::uint32_t line_of(std::size_t offset) const;
-    [[nodiscard]] std::size_t line_start(std::uint32_t line_number) const { return line_starts_[line_number - 1]; }
+    [[nodiscard]] std::size_t line_start(std::uint32_t line_number) const { return line_starts()[line_number - 1]; }
     // Code points in [from, to): the column distance between two offsets on one line.
     [[nodiscard]] std::uint32_t code_points(std::size_t from, std::size_t to) const;
     // The text of a 1-based line without its line terminator; empty when out of range.
     [[nodiscard]] std::string_view line(std::uint32_t line_number) const;
-    [[nodiscard]] std::size_t line_count() const { return line_starts_.size(); }
+    [[nodiscard]] std::size_t line_count() const { return line_starts().size(); }
 
 private:
+    // Built on first use: a reader walking in document order never needs it.
+    const std::vector<std::size_t>& line_starts() const;
+
     std::string path_;
     std::string text_;
-    std::vector<std::size_t> line_starts_;
+    mutable std::once_flag index_once_;
+    mutable std::vector<std::size_t> line_starts_;
 };
+
+// Counting helpers over UTF-8 text, eight bytes at a time.
+[[nodiscard]] std::size_t count_code_points(std::string_view text);
+[[nodiscard]] std::size_t count_newlines(std::string_view text);
 
 using SourceTextPtr = std::shared_ptr<const SourceText>;
 

@@ -64,4 +64,21 @@ const ObjectEntry* DictionaryIndex::entry(std::uint32_t index, std::uint32_t sub
     return l ? l->entry(subindex) : nullptr;
 }
 
+std::optional<std::uint64_t> default_integer(const ObjectEntry& entry) {
+    if (!entry.info) return std::nullopt;
+    if (entry.info->default_value) return entry.info->default_value->bits();
+    if (!entry.info->default_data) return std::nullopt;
+    const auto bytes = entry.info->default_data->bytes();
+    if (!bytes || bytes->empty() || bytes->size() > 8) return std::nullopt;
+    std::uint64_t value = 0;
+    for (std::size_t i = bytes->size(); i-- > 0;) value = (value << 8) | (*bytes)[i];
+    return value;
+}
+
+SourcePos default_pos(const ObjectEntry& entry) {
+    if (!entry.info) return {};
+    if (!entry.info->default_value && entry.info->default_data) return entry.info->default_data->pos;
+    return entry.info->pos;
+}
+
 }  // namespace esi::rules

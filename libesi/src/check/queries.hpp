@@ -41,4 +41,12 @@ private:
     mutable std::unordered_map<std::uint32_t, ObjectLayout> layouts_;
 };
 
+// The default of an object sub-entry as an integer bit pattern: DefaultValue, else DefaultData
+// read little-endian (ETG.2000 ObjectInfoType: DefaultData holds the bytes in SDO order, so
+// 0x1018:01 = 2 is written "02000000"). nullopt when there is no default, the data is not valid
+// hex or longer than 8 bytes. Rules comparing identity, 0x1C00 or 0x1C12/0x1C13 defaults use it.
+[[nodiscard]] std::optional<std::uint64_t> default_integer(const ObjectEntry& entry);
+// Where that default was written: the DefaultData element, else the sub-entry's Info element.
+[[nodiscard]] SourcePos default_pos(const ObjectEntry& entry);
+
 }  // namespace esi::rules

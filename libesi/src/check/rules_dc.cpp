@@ -1,8 +1,155 @@
-// Rules of the dc area. See docs/rules.md for the catalogue.
+// Rules of the dc area: distributed-clock operation modes (Dc/OpMode).
+//
+// AssignActivate is written by the master to ESC registers 0x0980 (low byte, cyclic unit control)
+// and 0x0981 (high byte, activation): 0x0981 bit 0 activates the cyclic unit, bit 1 generates
+// SYNC0, bit 2 SYNC1 (Beckhoff ESC datasheet section II, "Distributed Clocks"; domain note S26).
+// The usual values: #x0000 free run, #x0300 SYNC0, #x0700 SYNC0 + SYNC1, Beckhoff #x0730.
+#include <string>
+#include <unordered_map>
+
 #include "check/areas.hpp"
+#include "check/queries.hpp"
+#include "esi/number.hpp"
 
 namespace esi::rules {
 
-void add_dc(std::vector<Rule>& /*out*/) {}
+namespace {
+
+constexpr std::uint32_t activate_cyclic = 0x0100;
+constexpr std::uint32_t activate_sync0 = 0x0200;
+constexpr std::uint32_t activate_sync1 = 0x0400;
+
+std::string op_mode_label(const DcOpMode& mode) {
+    return mode.name.empty() ? std::string("OpMode") : "OpMode '" + mode.name + "'";
+}
+
+// ---- dc-opmode-name -------------------------------------------------------------------------
+
+void check_name(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->dc) continue;
+        std::unordered_map<std::string_view, const DcOpMode*> seen;
+        for (const auto& mode : device->dc->op_modes) {
+            if (mode.name.empty()) {
+                context.report(mode.pos, "Dc OpMode has no Name; masters and modules (DcOpModeName) select an operation "
+                                         "mode by its Name");
+                continue;
+            }
+            const auto [it, inserted] = seen.emplace(mode.name, &mode);
+            if (!inserted)
+                context.report(mode.pos, "Dc OpMode Name '" + mode.name + "' is used twice in this device; a master "
+                                                                          "selecting it by name gets either one",
+                               {context.note(it->second->pos, "first OpMode with this Name")});
+        }
+    }
+}
+
+// ---- dc-assign-activate ---------------------------------------------------------------------
+
+void check_assign_activate(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->dc) continue;
+        for (const auto& mode : device->dc->op_modes) {
+            if (!mode.has_assign_activate) {
+                // A written but unreadable value already got xml-number-format.
+                if (!mode.assign_activate_pos.known())
+                    context.report(mode.pos, op_mode_label(mode) + " has no AssignActivate; write #x0000 for free run");
+                continue;
+            }
+            const std::uint32_t aa = mode.assign_activate;
+            const std::string value = format_hex(aa, 4);
+            if (aa > 0xFFFF) {
+                context.report(mode.assign_activate_pos, op_mode_label(mode) + ": AssignActivate " + value +
+                                                             " does not fit the two registers 0x0980/0x0981 (16 bits)");
+            } else if ((aa & (activate_sync0 | activate_sync1)) != 0 && (aa & activate_cyclic) == 0) {
+                const std::string signals = (aa & activate_sync0) && (aa & activate_sync1) ? "SYNC0 and SYNC1"
+                                            : (aa & activate_sync0)                         ? "SYNC0"
+                                                                                            : "SYNC1";
+                context.report(mode.assign_activate_pos,
+                               op_mode_label(mode) + ": AssignActivate " + value + " asks for " + signals +
+                                   " but does not set bit 8 (register 0x0981 bit 0, cyclic unit activation); the ESC "
+                                   "generates no SYNC signal without it. Did you mean " +
+                                   format_hex(aa | activate_cyclic, 4) + "?");
+            }
+        }
+    }
+}
+
+// ---- dc-cycle-time --------------------------------------------------------------------------
+
+void check_cycle_time(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->dc) continue;
+        for (const auto& mode : device->dc->op_modes) {
+            for (const auto* t : {&mode.cycle_time_sync0, &mode.cycle_time_sync1}) {
+                if (*t && (*t)->value < 0)
+                    context.report((*t)->pos, op_mode_label(mode) + ": " +
+                                                  (t == &mode.cycle_time_sync0 ? "CycleTimeSync0" : "CycleTimeSync1") +
+                                                  " is " + std::to_string((*t)->value) +
+                                                  " ns; a cycle time cannot be negative (the ESC cycle registers are "
+                                                  "unsigned)");
+            }
+            if (!mode.has_assign_activate || mode.assign_activate > 0xFFFF) continue;
+            const bool sync0 = (mode.assign_activate & (activate_cyclic | activate_sync0)) == (activate_cyclic | activate_sync0);
+            const bool sync1 = (mode.assign_activate & (activate_cyclic | activate_sync1)) == (activate_cyclic | activate_sync1);
+            struct Timing {
+                const std::optional<DcTime>& time;
+                const char* name;
+                bool active;
+                const char* signal;
+            };
+            const Timing timings[] = {
+                {mode.cycle_time_sync0, "CycleTimeSync0", sync0, "SYNC0 (bits 8 and 9)"},
+                {mode.shift_time_sync0, "ShiftTimeSync0", sync0, "SYNC0 (bits 8 and 9)"},
+                {mode.cycle_time_sync1, "CycleTimeSync1", sync1, "SYNC1 (bits 8 and 10)"},
+                {mode.shift_time_sync1, "ShiftTimeSync1", sync1, "SYNC1 (bits 8 and 10)"},
+            };
+            for (const auto& t : timings) {
+                if (!t.time || t.active || t.time->value <= 0) continue;
+                context.report(t.time->pos, op_mode_label(mode) + ": " + t.name + " is " + std::to_string(t.time->value) +
+                                                " ns but AssignActivate " + format_hex(mode.assign_activate, 4) +
+                                                " does not activate " + t.signal +
+                                                "; the time is never used. Activate the signal or write 0");
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void add_dc(std::vector<Rule>& out) {
+    out.push_back(Rule{
+        "dc-opmode-name", Severity::error, "Dc OpMode without Name or with a repeated Name",
+        "Masters list the operation modes by Name and modules select theirs through DcOpModeName, so every OpMode "
+        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required; domain note S26). "
+        "Beckhoff's EL1262 description in the corpus has two OpModes named DcSync in one device.",
+        "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC</Name>...</OpMode>",
+        "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC-Sync01</Name>...</OpMode>", &check_name});
+    out.push_back(Rule{
+        "dc-assign-activate", Severity::error, "AssignActivate that asks for SYNC signals without activating the cyclic unit",
+        "The high byte of AssignActivate goes to ESC register 0x0981: bit 0 activates the cyclic unit, bit 1 SYNC0, "
+        "bit 2 SYNC1. SYNC0/SYNC1 bits without bit 0 (e.g. #x0200 instead of #x0300) generate no signal, so a device "
+        "that waits for SYNC0 does not reach SAFE-OP (Beckhoff ESC datasheet section II, register 0x0981; domain note "
+        "S26: #x0300 SYNC0, #x0700 SYNC0+SYNC1; STÖBER ECS 5000 manual §11.5: with synchronisation active the "
+        "inverter stays in PRE-OP without a valid SYNC0 cycle). A missing AssignActivate or one wider than 16 bits "
+        "is reported too.",
+        "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0200</AssignActivate></OpMode>",
+        "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0300</AssignActivate></OpMode>",
+        &check_assign_activate});
+    out.push_back(Rule{
+        "dc-cycle-time", Severity::warning, "DC times for a SYNC signal that is not activated, or negative cycle times",
+        "CycleTimeSync0/ShiftTimeSync0 configure SYNC0 and CycleTimeSync1/ShiftTimeSync1 SYNC1 (ESC registers "
+        "0x09A0-0x09A7; ETG.2010 DC category). A non-zero time for a signal AssignActivate does not activate is never "
+        "used and usually means the wrong AssignActivate was copied (e.g. a SYNC1 shift with #x0300); a negative "
+        "cycle time cannot be programmed at all. Factors are not checked: Beckhoff writes negative factors as "
+        "dividers of the bus cycle.",
+        "<OpMode><Name>DC</Name><AssignActivate>#x0300</AssignActivate><CycleTimeSync0 Factor=\"1\">0</CycleTimeSync0>"
+        "<ShiftTimeSync0>0</ShiftTimeSync0><CycleTimeSync1 Factor=\"1\">0</CycleTimeSync1><ShiftTimeSync1>100000</"
+        "ShiftTimeSync1></OpMode>",
+        "<OpMode><Name>DC</Name><AssignActivate>#x0700</AssignActivate><CycleTimeSync0 Factor=\"1\">0</CycleTimeSync0>"
+        "<ShiftTimeSync0>0</ShiftTimeSync0><CycleTimeSync1 Factor=\"1\">0</CycleTimeSync1><ShiftTimeSync1>100000</"
+        "ShiftTimeSync1></OpMode>",
+        &check_cycle_time});
+}
 
 }  // namespace esi::rules

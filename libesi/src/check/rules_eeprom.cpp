@@ -1,8 +1,207 @@
-// Rules of the eeprom area. See docs/rules.md for the catalogue.
+// Rules of the eeprom area: the Eeprom element from which tools build the SII EEPROM image
+// (ETG.2010). It is either a complete image (Data) or the structured form: ByteSize (SII word
+// 0x3E), ConfigData (words 0-6, the ESC configuration area), BootStrap (words 0x14-0x17) and
+// extra Categories.
+#include <string>
+
 #include "check/areas.hpp"
+#include "check/queries.hpp"
 
 namespace esi::rules {
 
-void add_eeprom(std::vector<Rule>& /*out*/) {}
+namespace {
+
+constexpr std::size_t config_data_max_bytes = 14;  // words 0..6; word 7 is the checksum
+constexpr std::size_t boot_strap_bytes = 8;        // 4 words: receive offset/size, send offset/size
+
+std::string device_label(const Device& device) {
+    return device.type.text.empty() ? std::string("Device") : "Device '" + device.type.text + "'";
+}
+
+// ---- eeprom-data-and-structured -------------------------------------------------------------
+
+void check_data_and_structured(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom || !device->eeprom->data) continue;
+        const Eeprom& e = *device->eeprom;
+        std::string also;
+        auto add = [&](bool present, const char* name) {
+            if (!present) return;
+            also += also.empty() ? name : std::string(", ") + name;
+        };
+        add(e.byte_size_pos.known(), "ByteSize");
+        add(e.config_data.has_value(), "ConfigData");
+        add(e.boot_strap.has_value(), "BootStrap");
+        add(!e.categories.empty(), "Category");
+        if (also.empty()) continue;
+        context.report(e.data->pos, device_label(*device) + ": Eeprom has a complete image (Data) and also " + also +
+                                        "; tools use either the image as it is or build one from the structured "
+                                        "elements, so one of them is silently ignored");
+    }
+}
+
+// ---- eeprom-byte-size -----------------------------------------------------------------------
+
+void check_byte_size(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom || !device->eeprom->byte_size) continue;
+        const std::uint32_t size = *device->eeprom->byte_size;
+        if (size != 0 && size % 128 == 0 && size / 128 <= 0x10000) continue;
+        std::string message = device_label(*device) + ": Eeprom ByteSize " + std::to_string(size);
+        if (size == 0) message += " is 0";
+        else if (size % 128 != 0) message += " is not a multiple of 128";
+        else message += " is larger than SII word 0x3E can express (8 MiB)";
+        message += "; SII word 0x3E stores the size as (bytes / 128) - 1, i.e. in KiBit minus one";
+        if (size % 128 != 0 && size > 128) message += " (nearest: " + std::to_string(size / 128 * 128) + ")";
+        context.report(device->eeprom->byte_size_pos, std::move(message));
+    }
+}
+
+// ---- eeprom-byte-size-unusual ---------------------------------------------------------------
+
+void check_byte_size_unusual(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom || !device->eeprom->byte_size) continue;
+        const std::uint32_t size = *device->eeprom->byte_size;
+        if (size == 0 || size % 128 != 0 || (size & (size - 1)) == 0) continue;  // eeprom-byte-size or fine
+        std::uint32_t below = 128;
+        while (below * 2 <= size) below *= 2;
+        context.report(device->eeprom->byte_size_pos,
+                       device_label(*device) + ": Eeprom ByteSize " + std::to_string(size) +
+                           " is not a power of two, which no serial EEPROM part has (" +
+                           std::to_string(below) + " or " + std::to_string(below * 2) +
+                           " would be); keep it only for an emulated EEPROM of exactly this size");
+    }
+}
+
+// ---- eeprom-hex -----------------------------------------------------------------------------
+
+void report_bad_hex(const HexData& data, std::string_view what, const Device& device, SourcePos fallback,
+                    RuleContext& context) {
+    if (data.valid()) return;
+    const bool odd = data.text.size() % 2 != 0;
+    std::string shown = data.text.size() > 24 ? data.text.substr(0, 24) + "..." : data.text;
+    context.report(data.pos.known() ? data.pos : fallback,
+                   device_label(device) + ": Eeprom " + std::string(what) + " '" + shown + "' " +
+                       (odd ? "has an odd number of hex digits (" + std::to_string(data.text.size()) + ")"
+                            : std::string("contains characters that are not hex digits")) +
+                       "; hexBinary needs two hex digits per byte");
+}
+
+void check_hex(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom) continue;
+        const Eeprom& e = *device->eeprom;
+        if (e.data) report_bad_hex(*e.data, "Data", *device, e.pos, context);
+        if (e.config_data) report_bad_hex(*e.config_data, "ConfigData", *device, e.pos, context);
+        if (e.boot_strap) report_bad_hex(*e.boot_strap, "BootStrap", *device, e.pos, context);
+        for (const auto& cat : e.categories)
+            if (cat.data) report_bad_hex(*cat.data, "Category Data", *device, cat.pos, context);
+    }
+}
+
+// ---- eeprom-config-data ---------------------------------------------------------------------
+
+void check_config_data(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom || !device->eeprom->config_data || !device->eeprom->config_data->valid()) continue;
+        const HexData& data = *device->eeprom->config_data;
+        const std::size_t bytes = data.byte_length();
+        if (bytes <= config_data_max_bytes) continue;
+        context.report(data.pos, device_label(*device) + ": Eeprom ConfigData has " + std::to_string(bytes) +
+                                     " bytes; it fills SII words 0-6 (14 bytes), and word 7 is the checksum that tools "
+                                     "compute, so bytes beyond 14 overwrite the checksum or the identity words");
+    }
+}
+
+// ---- eeprom-boot-strap ----------------------------------------------------------------------
+
+void check_boot_strap(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom || !device->eeprom->boot_strap || !device->eeprom->boot_strap->valid()) continue;
+        const HexData& data = *device->eeprom->boot_strap;
+        if (data.byte_length() == boot_strap_bytes) continue;
+        context.report(data.pos, device_label(*device) + ": Eeprom BootStrap has " + std::to_string(data.byte_length()) +
+                                     " bytes; it must be exactly 8 (SII words 0x14-0x17: bootstrap receive mailbox "
+                                     "offset and size, send mailbox offset and size)");
+    }
+}
+
+// ---- eeprom-category ------------------------------------------------------------------------
+
+void check_category(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom) continue;
+        for (const auto& cat : device->eeprom->categories) {
+            const bool has_cat_no = cat.cat_no_pos.known();
+            const bool has_payload = cat.data || cat.data_string || cat.data_uint || cat.data_udint;
+            if (has_cat_no && has_payload) continue;
+            std::string message = device_label(*device) + ": Eeprom Category ";
+            if (has_cat_no) message += std::to_string(cat.cat_no) + " ";
+            if (!has_cat_no && !has_payload) message += "has neither CatNo nor a payload";
+            else if (!has_cat_no) message += "has no CatNo, so tools cannot write its category header";
+            else message += "has no payload (Data, DataString, DataUINT or DataUDINT)";
+            context.report(cat.pos, std::move(message));
+        }
+    }
+}
+
+}  // namespace
+
+void add_eeprom(std::vector<Rule>& out) {
+    out.push_back(Rule{
+        "eeprom-data-and-structured", Severity::error, "Eeprom with both a raw Data image and structured elements",
+        "Eeprom is a choice: either Data, the complete SII image used as it is, or ByteSize/ConfigData/BootStrap/"
+        "Category from which a tool builds the image (ETG.2000 EepromType; leducp/KickCAT rejects 'Eeprom with both "
+        "Data and ByteSize'; domain note S27). With both, one half is silently ignored, and which half differs between "
+        "tools.",
+        "<Eeprom><Data>050E0344...</Data><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E03440A000000</ConfigData></Eeprom>",
+        &check_data_and_structured});
+    out.push_back(Rule{
+        "eeprom-byte-size", Severity::error, "Eeprom ByteSize that SII word 0x3E cannot express",
+        "SII word 0x3E holds the EEPROM size as KiBit minus one, i.e. bytes / 128 - 1 (ETG.2010; Beckhoff ESC datasheet "
+        "'SII EEPROM content'). A ByteSize of 0 or one that is not a multiple of 128 cannot be written there, and the "
+        "conformance tool compares ByteSize with that word (CTT TF-1300 2-6).",
+        "<Eeprom><ByteSize>2000</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>", &check_byte_size});
+    out.push_back(Rule{
+        "eeprom-byte-size-unusual", Severity::info, "Eeprom ByteSize that is not a power of two",
+        "SII EEPROMs are serial parts of 2^n bytes (1 KiBit = 128 bytes up to 16 KiBit = 2048 bytes and beyond); a "
+        "size such as 1920 fits SII word 0x3E but matches no part, and tools that size images by it write or check "
+        "the wrong range (CTT TF-1300 2-6; MetalMusings/MyOwnEtherCATDevice #16 'file length is larger than chip "
+        "capacity'). Emulated EEPROMs (in an MCU or FPGA) can have other sizes, hence only information.",
+        "<Eeprom><ByteSize>1920</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>", &check_byte_size_unusual});
+    out.push_back(Rule{
+        "eeprom-hex", Severity::error, "Eeprom Data, ConfigData, BootStrap or Category Data that is not hexBinary",
+        "These elements are xs:hexBinary: two hex digits per byte. An odd number of digits or a stray character "
+        "leaves the bytes undefined; SII writers differ in padding or truncating them (ETG.2000 EepromType; "
+        "leducp/KickCAT 'odd-length hex binary'; synapticon/siitool PR #6 fixed its ConfigData scanf).",
+        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E034</ConfigData></Eeprom>",
+        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>", &check_hex});
+    out.push_back(Rule{
+        "eeprom-config-data", Severity::error, "Eeprom ConfigData longer than 14 bytes",
+        "ConfigData is the ESC configuration area, SII words 0-6 (PDI control and configuration, SYNC pulse length, "
+        "extended PDI configuration, station alias, two reserved words); word 7 is a CRC-8 over these 14 bytes that "
+        "tools compute (Beckhoff ESC datasheet section I table 'ESC configuration area'; ETG.2010; CTT TF-1300 2-8). "
+        "Longer ConfigData runs into the checksum and the identity words.",
+        "<ConfigData>050E03440A0000000000000000000000</ConfigData>", "<ConfigData>050E03440A000000000000000000</ConfigData>",
+        &check_config_data});
+    out.push_back(Rule{
+        "eeprom-boot-strap", Severity::error, "Eeprom BootStrap that is not exactly 8 bytes",
+        "BootStrap holds SII words 0x14-0x17: bootstrap receive mailbox offset and size, send mailbox offset and size "
+        "(ETG.2010; domain note S9). Another length shifts or truncates these words, and firmware that compares them "
+        "with its boot constants refuses BOOT (ALERR_INVALIDBOOTMBXCONFIG, the gen_od review; "
+        "kubabuda/EEPROM_generator #3).",
+        "<BootStrap>00108000801080</BootStrap>", "<BootStrap>0010800080108000</BootStrap>", &check_boot_strap});
+    out.push_back(Rule{
+        "eeprom-category", Severity::error, "Eeprom Category without CatNo or without payload",
+        "An extra SII category needs its type (CatNo, the category header word) and its content (Data, DataString, "
+        "DataUINT or DataUDINT); without either, tools cannot write it (ETG.2000 EepromType Category; ETG.2010 "
+        "category layout; leducp/KickCAT 'Eeprom Category without payload'; domain note S27).",
+        "<Category><CatNo>2048</CatNo></Category>", "<Category><CatNo>2048</CatNo><Data>0100</Data></Category>",
+        &check_category});
+}
 
 }  // namespace esi::rules

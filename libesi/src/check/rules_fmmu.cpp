@@ -1,8 +1,150 @@
-// Rules of the fmmu area. See docs/rules.md for the catalogue.
+// Rules of the fmmu area. An FMMU maps a range of the master's logical process image onto ESC
+// memory; the Fmmu elements say what each of the device's FMMUs is for, and the SII FMMU
+// category (ETG.2010, category 40) encodes that use as one byte: 1 Outputs, 2 Inputs,
+// 3 SyncM status (MBoxState), 0 unused.
+#include <string>
+
 #include "check/areas.hpp"
+#include "check/queries.hpp"
+#include "check/sm_roles.hpp"
+#include "esi/text_distance.hpp"
 
 namespace esi::rules {
 
-void add_fmmu(std::vector<Rule>& /*out*/) {}
+namespace {
+
+// The schema leaves the text free; ETG.2000 names Outputs, Inputs and MBoxState, and Beckhoff's
+// AX5xxx drives add DynamicOutputs/DynamicInputs, which SII writers store as Outputs/Inputs.
+constexpr std::string_view known_types[] = {"Outputs", "Inputs", "MBoxState", "DynamicInputs", "DynamicOutputs"};
+
+SmRole fmmu_sm_role(std::string_view type) {
+    if (type == "Outputs" || type == "DynamicOutputs") return SmRole::outputs;
+    if (type == "Inputs" || type == "DynamicInputs") return SmRole::inputs;
+    if (type == "MBoxState") return SmRole::mailbox_in;
+    return SmRole::unknown;
+}
+
+std::string fmmu_label(const Fmmu& fmmu, std::size_t number) {
+    return "FMMU" + std::to_string(number) + (fmmu.type.empty() ? std::string() : " '" + fmmu.type + "'");
+}
+
+// ---- fmmu-type-unknown ----------------------------------------------------------------------
+
+void check_type(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        for (std::size_t n = 0; n < device->fmmus.size(); ++n) {
+            const Fmmu& fmmu = device->fmmus[n];
+            // An empty Fmmu is an unused FMMU (SII FMMU category value 0), as Beckhoff writes <Fmmu/>.
+            if (fmmu.type.empty() || fmmu_sm_role(fmmu.type) != SmRole::unknown) continue;
+            std::string message = "FMMU" + std::to_string(n) + " has type '" + fmmu.type +
+                                  "', which is none of Outputs, Inputs, MBoxState, DynamicInputs, DynamicOutputs; SII "
+                                  "writers cannot encode it";
+            const std::string suggestion = closest_match(fmmu.type, known_types);
+            if (!suggestion.empty()) message += " (did you mean '" + suggestion + "'?)";
+            context.report(fmmu.pos, std::move(message));
+        }
+    }
+}
+
+// ---- fmmu-sm-reference ----------------------------------------------------------------------
+
+void check_sm_reference(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        for (std::size_t n = 0; n < device->fmmus.size(); ++n) {
+            const Fmmu& fmmu = device->fmmus[n];
+            if (!fmmu.sm) continue;
+            if (*fmmu.sm >= device->sms.size()) {
+                context.report(fmmu.pos, fmmu_label(fmmu, n) + " names Sm " + std::to_string(*fmmu.sm) + " but the device has " +
+                                             std::to_string(device->sms.size()) + " Sm element" +
+                                             (device->sms.size() == 1 ? "" : "s"));
+                continue;
+            }
+            const SmRole wanted = fmmu_sm_role(fmmu.type);
+            const SyncManager& sm = device->sms[*fmmu.sm];
+            const SmRole role = device_sm_role(*device, sm);
+            if (wanted == SmRole::unknown || role == SmRole::unknown || role == wanted) continue;
+            context.report(fmmu.pos,
+                           fmmu_label(fmmu, n) + " maps SM" + std::to_string(*fmmu.sm) +
+                               (sm.type.empty() ? std::string() : " '" + sm.type + "'") + ", which is " +
+                               std::string(to_string(role)) + "; an " + fmmu.type + " FMMU needs an " +
+                               std::string(to_string(wanted)) + " SyncManager",
+                           {context.note(sm.pos, "the SyncManager")});
+        }
+    }
+}
+
+// ---- fmmu-missing ---------------------------------------------------------------------------
+
+// Whether a process-data SM will carry data: a size, or PDOs assigned to it by default.
+bool carries_data(const Device& device, std::size_t number) {
+    const SyncManager& sm = device.sms[number];
+    if (sm.default_size && *sm.default_size > 0) return true;
+    for (const auto* list : {&device.rx_pdos, &device.tx_pdos})
+        for (const auto& pdo : *list)
+            if (pdo.sm && *pdo.sm == number && pdo.bit_size() > 0) return true;
+    return false;
+}
+
+void check_missing(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        bool has_outputs_fmmu = false;
+        bool has_inputs_fmmu = false;
+        for (const auto& fmmu : device->fmmus) {
+            const SmRole role = fmmu_sm_role(fmmu.type);
+            has_outputs_fmmu = has_outputs_fmmu || role == SmRole::outputs;
+            has_inputs_fmmu = has_inputs_fmmu || role == SmRole::inputs;
+        }
+        // An FMMU without a known use (empty, as in Beckhoff's early <Fmmu/> lists, or vendor text, which
+        // gets fmmu-type-unknown) may be the one the master uses for this data: do not guess.
+        bool has_unknown_fmmu = false;
+        for (const auto& fmmu : device->fmmus) has_unknown_fmmu = has_unknown_fmmu || fmmu_sm_role(fmmu.type) == SmRole::unknown;
+        if (has_unknown_fmmu) continue;
+        for (std::size_t n = 0; n < device->sms.size(); ++n) {
+            const SyncManager& sm = device->sms[n];
+            if (sm.is_virtual && *sm.is_virtual) continue;
+            const SmRole role = device_sm_role(*device, sm);
+            const bool outputs = role == SmRole::outputs;
+            if ((!outputs && role != SmRole::inputs) || !carries_data(*device, n)) continue;
+            if (outputs ? has_outputs_fmmu : has_inputs_fmmu) continue;
+            const std::string kind = outputs ? "Outputs" : "Inputs";
+            context.report(sm.pos, "SM" + std::to_string(n) + " '" + sm.type + "' carries process data but the device has no " +
+                                       kind + " Fmmu; without it the master has no FMMU to map the " +
+                                       (outputs ? "outputs" : "inputs") + " into the process image");
+            if (outputs) has_outputs_fmmu = true;  // one finding per direction
+            else has_inputs_fmmu = true;
+        }
+    }
+}
+
+}  // namespace
+
+void add_fmmu(std::vector<Rule>& out) {
+    out.push_back(Rule{
+        "fmmu-type-unknown", Severity::error, "Fmmu text that is not an FMMU use",
+        "The Fmmu text says what the FMMU maps: Outputs, Inputs or MBoxState (and Beckhoff's DynamicOutputs/"
+        "DynamicInputs). The SII FMMU category stores exactly these as 1, 2, 3 (0 unused), so any other text cannot "
+        "be written to the EEPROM and masters do not know how to use the FMMU (ETG.2000 Fmmu; ETG.2010 category 40; "
+        "CTT TF-1300 2-11 compares them).",
+        "<Fmmu>Output</Fmmu>", "<Fmmu>Outputs</Fmmu>", &check_type});
+    out.push_back(Rule{
+        "fmmu-sm-reference", Severity::error, "Fmmu@Sm names a missing SM or one of the other direction",
+        "Fmmu@Sm ties the FMMU to a SyncManager (the n-th Sm element). An Outputs FMMU must map an output SM, an "
+        "Inputs FMMU an input SM and MBoxState the mailbox-in SM whose status bit it maps; a reference to a missing "
+        "or opposite SM makes masters that follow it map the wrong memory (ETG.2000 Fmmu@Sm; ethercrab-rs/ethercrab "
+        "#287 falls back to the SM index when the mapping cannot be resolved).",
+        "<Fmmu Sm=\"3\">Outputs</Fmmu> ... (SM3 is Inputs)", "<Fmmu Sm=\"2\">Outputs</Fmmu> ... (SM2 is Outputs)",
+        &check_sm_reference});
+    out.push_back(Rule{
+        "fmmu-missing", Severity::warning, "Process data without an FMMU of that direction",
+        "Process data reaches the master's logical image only through an FMMU; the schema leaves Fmmu optional, so a "
+        "generator that forgets it produces a schema-valid file whose device never exchanges process data (the "
+        "gen_od review in the domain notes: 'missing <Fmmu> ... not caught by schema validation'; CTT TF-1300 3-3 "
+        "counts them). The rule fires once per direction for the first SM that carries data (a DefaultSize or "
+        "default PDOs) without an FMMU of its kind.",
+        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"1\" Enable=\"1\">Outputs</Sm> (no Fmmu)",
+        "<Fmmu>Outputs</Fmmu> ... <Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"1\" "
+        "Enable=\"1\">Outputs</Sm>",
+        &check_missing});
+}
 
 }  // namespace esi::rules

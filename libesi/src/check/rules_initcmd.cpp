@@ -1,8 +1,309 @@
-// Rules of the initcmd area. See docs/rules.md for the catalogue.
+// Rules of the initcmd area: the mailbox commands (CoE SDO downloads, SoE, EoE, AoE) a master
+// sends while it moves the device through the EtherCAT state machine.
+#include <string>
+
 #include "check/areas.hpp"
+#include "check/queries.hpp"
+#include "esi/number.hpp"
+#include "esi/text_distance.hpp"
 
 namespace esi::rules {
 
-void add_initcmd(std::vector<Rule>& /*out*/) {}
+namespace {
+
+enum class Protocol { coe, soe, eoe, aoe };
+
+std::string_view protocol_name(Protocol p) {
+    switch (p) {
+        case Protocol::coe: return "CoE";
+        case Protocol::soe: return "SoE";
+        case Protocol::eoe: return "EoE";
+        case Protocol::aoe: return "AoE";
+    }
+    return "";
+}
+
+struct InitCmdSite {
+    const InitCmd* cmd;
+    Protocol protocol;
+    const Dictionary* dictionary;  // the dictionary CoE targets live in; null when unknown
+};
+
+// Every InitCmd of the document's devices and modules, in document order. A module's commands are
+// checked against the module's own Profile/Dictionary only: the device it plugs into is not known.
+template <class F>
+void for_each_init_cmd(const EsiDocument& document, F&& f) {
+    auto visit = [&](const Mailbox& mailbox, const Dictionary* dictionary) {
+        if (mailbox.coe)
+            for (const auto& c : mailbox.coe->init_cmds) f(InitCmdSite{&c, Protocol::coe, dictionary});
+        if (mailbox.soe)
+            for (const auto& c : mailbox.soe->init_cmds) f(InitCmdSite{&c, Protocol::soe, nullptr});
+        if (mailbox.eoe)
+            for (const auto& c : mailbox.eoe->init_cmds) f(InitCmdSite{&c, Protocol::eoe, nullptr});
+        if (mailbox.aoe)
+            for (const auto& c : mailbox.aoe->init_cmds) f(InitCmdSite{&c, Protocol::aoe, nullptr});
+    };
+    for (const auto& info : document.infos) {
+        for (const auto& device : info.devices)
+            if (device.mailbox) visit(*device.mailbox, device.dictionary());
+        for (const auto& module : info.modules) {
+            if (!module.mailbox) continue;
+            const Dictionary* dictionary = module.profile && module.profile->dictionary ? &*module.profile->dictionary : nullptr;
+            visit(*module.mailbox, dictionary);
+        }
+    }
+}
+
+// EtherCAT state machine transitions (ETG.1000.6 §6.4 / ETG.1000.4 ESM): Init, Pre-Operational,
+// Safe-Operational, Operational, Bootstrap. The servo manuals' Tabelle 8 lists the nine without
+// bootstrap.
+constexpr std::string_view esm_transitions[] = {"IP", "PI", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "IB", "BI"};
+// The transitions schema 1.17 allows for InitCmds of every protocol (AoE, EoE, CoE, SoE, module CoE).
+constexpr std::string_view init_cmd_transitions[] = {"IP", "PS", "SO", "SP", "OP", "OS"};
+
+bool contains(std::span<const std::string_view> list, std::string_view value) {
+    for (std::string_view v : list)
+        if (v == value) return true;
+    return false;
+}
+
+std::string describe(const InitCmdSite& site) {
+    std::string text = std::string(protocol_name(site.protocol)) + " InitCmd";
+    if (site.cmd->index) {
+        text += " " + format_hex(*site.cmd->index, 4);
+        if (site.cmd->subindex) text += ":" + std::to_string(*site.cmd->subindex);
+    } else if (site.cmd->idn) {
+        text += " IDN " + std::to_string(*site.cmd->idn);
+    }
+    if (site.cmd->comment && !site.cmd->comment->empty()) text += " ('" + *site.cmd->comment + "')";
+    return text;
+}
+
+// ---- initcmd-transition-unknown -------------------------------------------------------------
+
+void check_transition_unknown(const EsiDocument& document, RuleContext& context) {
+    for_each_init_cmd(document, [&](const InitCmdSite& site) {
+        for (const auto& t : site.cmd->transitions) {
+            if (contains(esm_transitions, t.text)) continue;
+            std::string message = describe(site) + ": Transition '" + t.text + "' is not an EtherCAT state transition";
+            std::string upper = t.text;
+            for (char& c : upper)
+                if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+            const std::string suggestion = contains(esm_transitions, upper) ? upper : closest_match(t.text, init_cmd_transitions);
+            if (!suggestion.empty()) message += "; did you mean '" + suggestion + "'?";
+            else message += " (IP, PS, SP, SO, OS, OP)";
+            context.report(t.pos, std::move(message));
+        }
+    });
+}
+
+// ---- initcmd-transition-not-allowed ---------------------------------------------------------
+
+std::string_view transition_reason(std::string_view t) {
+    if (t == "IB" || t == "BI") return "bootstrap transitions use the bootstrap mailbox, which carries FoE only";
+    return "a command on the way down to Init is not part of the schema's start-up list, and masters do not send it";
+}
+
+void check_transition_not_allowed(const EsiDocument& document, RuleContext& context) {
+    for_each_init_cmd(document, [&](const InitCmdSite& site) {
+        for (const auto& t : site.cmd->transitions) {
+            if (!contains(esm_transitions, t.text) || contains(init_cmd_transitions, t.text)) continue;
+            context.report(t.pos, describe(site) + ": Transition '" + t.text + "' is a state transition, but InitCmds " +
+                                      "may only run at IP, PS, SP, SO, OS or OP (ETG.2000 schema); " +
+                                      std::string(transition_reason(t.text)));
+        }
+    });
+}
+
+// ---- initcmd-transition-missing -------------------------------------------------------------
+
+void check_transition_missing(const EsiDocument& document, RuleContext& context) {
+    for_each_init_cmd(document, [&](const InitCmdSite& site) {
+        if (!site.cmd->transitions.empty()) return;
+        context.report(site.cmd->pos, describe(site) + " has no Transition, so a master never sends it");
+    });
+}
+
+// ---- initcmd-data-hex -----------------------------------------------------------------------
+
+void check_data_hex(const EsiDocument& document, RuleContext& context) {
+    for_each_init_cmd(document, [&](const InitCmdSite& site) {
+        const InitCmd& cmd = *site.cmd;
+        if (!cmd.has_data || cmd.data.valid()) return;
+        const bool odd = cmd.data.text.size() % 2 != 0;
+        std::string message = describe(site) + ": Data '" + cmd.data.text + "' ";
+        if (odd) {
+            bool digits = true;
+            for (char c : cmd.data.text)
+                digits = digits && ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F'));
+            message += digits ? "has an odd number of hex digits; Data is hexBinary, two digits per byte (write '0" +
+                                    cmd.data.text + "')"
+                              : "is not hexBinary (two hex digits per byte)";
+        } else {
+            message += "is not hexBinary (two hex digits per byte, no prefix)";
+        }
+        context.report(cmd.data.pos.known() ? cmd.data.pos : cmd.pos, std::move(message));
+    });
+}
+
+// ---- initcmd-target-missing / initcmd-data-length --------------------------------------------
+
+// CoE InitCmds whose target can be looked up: a dictionary exists and the index is absolute
+// (IndexDependOnSlot adds a slot offset the description alone does not fix).
+template <class F>
+void for_each_coe_target(const EsiDocument& document, F&& f) {
+    const Dictionary* indexed = nullptr;
+    std::optional<DictionaryIndex> index;
+    for_each_init_cmd(document, [&](const InitCmdSite& site) {
+        if (site.protocol != Protocol::coe || !site.dictionary || !site.cmd->index) return;
+        if ((site.cmd->index_depend_on_slot && *site.cmd->index_depend_on_slot) ||
+            (site.cmd->index_depend_on_slot_group && *site.cmd->index_depend_on_slot_group))
+            return;
+        if (indexed != site.dictionary) {  // InitCmds of one device come together: build once per device
+            index.emplace(site.dictionary);
+            indexed = site.dictionary;
+        }
+        f(site, *index);
+    });
+}
+
+void check_target_missing(const EsiDocument& document, RuleContext& context) {
+    for_each_coe_target(document, [&](const InitCmdSite& site, const DictionaryIndex& index) {
+        const std::uint32_t object_index = *site.cmd->index;
+        const Object* object = index.object(object_index);
+        if (!object) {
+            context.report(site.cmd->pos, describe(site) + " writes object " + format_hex(object_index, 4) +
+                                              ", which the Dictionary does not list; either the offline dictionary is "
+                                              "incomplete or the slave answers with SDO abort 0x06020000 'object does "
+                                              "not exist'");
+            return;
+        }
+        const std::uint32_t subindex = site.cmd->subindex.value_or(0);
+        if (site.cmd->complete_access && *site.cmd->complete_access && subindex <= 1) return;
+        const ObjectLayout* layout = index.layout(object_index);
+        if (!layout || layout->entry(subindex)) return;
+        std::uint32_t highest = 0;
+        for (const auto& e : layout->entries) highest = std::max(highest, e.subindex);
+        context.report(site.cmd->pos, describe(site) + " writes sub-index " + std::to_string(subindex) + " of " +
+                                          format_hex(object_index, 4) + " '" + primary_text(object->names) +
+                                          "', which has sub-indices 0.." + std::to_string(highest) +
+                                          " in the Dictionary; either the offline dictionary is incomplete or the slave "
+                                          "answers with SDO abort 0x06090011 'subindex does not exist'",
+                       {context.note(object->pos, "the object")});
+    });
+}
+
+// Types whose value has a fixed size: a shorter download is refused (SDO abort 0x06070013).
+bool fixed_size(const ObjectEntry& entry) {
+    if (!entry.basic) return false;
+    switch (entry.basic->type_class) {
+        case TypeClass::boolean:
+        case TypeClass::bit:
+        case TypeClass::signed_integer:
+        case TypeClass::unsigned_integer:
+        case TypeClass::real:
+        case TypeClass::bit_string: return true;
+        default: return false;
+    }
+}
+
+void check_data_length(const EsiDocument& document, RuleContext& context) {
+    for_each_coe_target(document, [&](const InitCmdSite& site, const DictionaryIndex& index) {
+        const InitCmd& cmd = *site.cmd;
+        if (!cmd.has_data || !cmd.data.valid()) return;
+        const Object* object = index.object(*cmd.index);
+        if (!object) return;
+        const std::uint64_t bytes = cmd.data.byte_length();
+        const SourcePos at = cmd.data.pos.known() ? cmd.data.pos : cmd.pos;
+        if (cmd.complete_access && *cmd.complete_access) {
+            // Complete access writes the whole object from sub-index 0 or 1 on; BitSize covers it all.
+            const std::uint64_t object_bytes = (object->bit_size + 7) / 8;
+            if (object->bit_size == 0 || bytes <= object_bytes) return;
+            context.report(at, describe(site) + ": Data has " + std::to_string(bytes) + " bytes, more than the whole object " +
+                                   format_hex(*cmd.index, 4) + " (" + std::to_string(object_bytes) + " bytes, BitSize " +
+                                   std::to_string(object->bit_size) + ") a complete access can write",
+                           {context.note(object->pos, "the object")});
+            return;
+        }
+        const ObjectLayout* layout = index.layout(*cmd.index);
+        const ObjectEntry* entry = layout ? layout->entry(cmd.subindex.value_or(0)) : nullptr;
+        if (!entry || entry->bit_size == 0) return;
+        const std::uint64_t entry_bytes = (entry->bit_size + 7) / 8;
+        if (bytes == entry_bytes || (bytes < entry_bytes && !fixed_size(*entry))) return;
+        context.report(at,
+                       describe(site) + ": Data has " + std::to_string(bytes) + " byte" + (bytes == 1 ? "" : "s") + " but " +
+                           format_hex(*cmd.index, 4) + ":" + std::to_string(entry->subindex) + " '" + entry->name + "' is " +
+                           (entry->type.empty() ? std::string() : entry->type + ", ") + std::to_string(entry->bit_size) +
+                           " bits (" + std::to_string(entry_bytes) + " byte" + (entry_bytes == 1 ? "" : "s") +
+                           "); the slave answers with SDO abort 0x0607001" + (bytes > entry_bytes ? "2 'length too high'" : "3 'length too low'"),
+                       {context.note(object->pos, "the object")});
+    });
+}
+
+}  // namespace
+
+void add_initcmd(std::vector<Rule>& out) {
+    out.push_back(Rule{
+        "initcmd-transition-unknown", Severity::error, "InitCmd Transition that is not an EtherCAT state transition",
+        "A Transition names the state change at which the master sends the command: two letters from I (Init), P "
+        "(Pre-Operational), S (Safe-Operational), O (Operational), B (Bootstrap), e.g. PS = Pre-Op -> Safe-Op "
+        "(ETG.1000.6 state machine; ETG.2000 InitCmd; servo manuals §6.2 Tabelle 8, §6.7.4). Anything else, including "
+        "lower case, matches no transition, so the master never sends the command; the schema enumeration rejects it "
+        "(leducp/KickCAT reports 'unknown transition').",
+        "<InitCmd><Transition>PO</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+        &check_transition_unknown});
+    out.push_back(Rule{
+        "initcmd-transition-not-allowed", Severity::warning, "InitCmd at a transition the schema does not allow (PI, SI, OI, IB, BI)",
+        "Schema 1.17 allows InitCmd transitions IP, PS, SO, SP, OP and OS for every protocol (AoE, EoE, CoE, SoE). The "
+        "servo manuals list all nine state-machine transitions (IP, PI, PS, SP, SO, OS, OP, SI, OI; Tabelle 8/15) "
+        "because their Transition column refers to the state machine, but the transitions down to Init (PI, SI, OI) "
+        "are not start-up steps, and Bootstrap transitions (IB, BI) run on the bootstrap mailbox, which carries FoE "
+        "only. Masters that follow the schema never send such a command, so it is reported as a warning rather than "
+        "an error: the value is a real transition, but the command silently does nothing.",
+        "<InitCmd><Transition>PI</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+        &check_transition_not_allowed});
+    out.push_back(Rule{
+        "initcmd-transition-missing", Severity::error, "InitCmd without Transition",
+        "Transition is required (maxOccurs unbounded, at least one): without it the master does not know when to send "
+        "the command, and it is never sent (ETG.2000 InitCmd; leducp/KickCAT rejects 'InitCmd without "
+        "Transition').",
+        "<InitCmd><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+        &check_transition_missing});
+    out.push_back(Rule{
+        "initcmd-data-hex", Severity::error, "InitCmd Data that is not even-length hexBinary",
+        "InitCmd Data is xs:hexBinary: two hex digits per byte, no prefix, written in the byte order of the SDO "
+        "(little-endian for numbers). An odd number of digits has no byte reading: the servo manuals' own example "
+        "writes the 16-bit Controlword 0x6040 with `<Data>0</Data>` (servo manuals §7), which tools pad, truncate or "
+        "reject differently (leducp/KickCAT: 'odd-length hex binary').",
+        "<InitCmd><Transition>PS</Transition><Index>#x6040</Index><SubIndex>0</SubIndex><Data>0</Data></InitCmd>",
+        "<InitCmd><Transition>PS</Transition><Index>#x6040</Index><SubIndex>0</SubIndex><Data>0000</Data></InitCmd>",
+        &check_data_hex});
+    out.push_back(Rule{
+        "initcmd-data-length", Severity::error, "InitCmd Data longer (or, for numbers, shorter) than the target",
+        "An SDO download must carry exactly the size of a numeric target; the slave refuses other lengths with abort "
+        "0x06070012 (too long) or 0x06070013 (too short) and the master stops the start-up (ETG.1000.6 SDO abort "
+        "codes). Strings and domains may be shorter. With CompleteAccess the data may fill the whole object, so it is "
+        "compared with the object's BitSize. Checked when the device has a Dictionary (servo manuals §7: Controlword, "
+        "16 bits, written with a 1-digit Data; R12 limits their SDOs to 4 bytes).",
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>0300</Data></InitCmd> "
+        "(0x6060 is SINT)",
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+        &check_data_length});
+    out.push_back(Rule{
+        "initcmd-target-missing", Severity::warning, "CoE InitCmd writing an object or sub-index the Dictionary lacks",
+        "A CoE InitCmd is an SDO download to Index:SubIndex. When the device's Dictionary does not have the target, "
+        "the slave answers with abort 0x06020000 or 0x06090011 and the master stops the state change "
+        "(OpenEtherCATsociety/SOEM #402 'index:0016.00 error:06020000 The object does not exist'; servo manuals D7). "
+        "Checked only when the device (or module) has a Dictionary; commands whose index depends on the slot are "
+        "skipped. A warning, not an error: ESI dictionaries are offline copies that vendors sometimes trim (Beckhoff "
+        "AX2000 writes 0x60C2 at start-up but lists no 0x60C2), so either the command or the dictionary is wrong.",
+        "<InitCmd><Transition>PS</Transition><Index>#x6061</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd> "
+        "(no object 0x6061)",
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+        &check_target_missing});
+}
 
 }  // namespace esi::rules

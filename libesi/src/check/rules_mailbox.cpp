@@ -1,8 +1,88 @@
-// Rules of the mailbox area. See docs/rules.md for the catalogue.
+// Rules of the mailbox area: the Mailbox element of a device, its protocols and the SMs it needs.
+#include <string>
+
 #include "check/areas.hpp"
+#include "check/queries.hpp"
+#include "check/sm_roles.hpp"
 
 namespace esi::rules {
 
-void add_mailbox(std::vector<Rule>& /*out*/) {}
+namespace {
+
+// ---- mailbox-data-link-layer ----------------------------------------------------------------
+
+void check_data_link_layer(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->mailbox) continue;
+        const Mailbox& mailbox = *device->mailbox;
+        if (mailbox.data_link_layer && *mailbox.data_link_layer) continue;
+        context.report(mailbox.pos, std::string("Mailbox ") +
+                                        (mailbox.data_link_layer ? "has DataLinkLayer=\"false\"" : "does not set DataLinkLayer") +
+                                        "; devices with a mailbox are expected to support the mailbox data link layer "
+                                        "(repeat request and counter) and to declare it with DataLinkLayer=\"true\"");
+    }
+}
+
+// ---- mailbox-sm-missing ---------------------------------------------------------------------
+
+void check_sm_missing(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->mailbox) continue;
+        bool has_out = false;
+        bool has_in = false;
+        for (const auto& sm : device->sms) {
+            const SmRole role = device_sm_role(*device, sm);
+            has_out = has_out || role == SmRole::mailbox_out;
+            has_in = has_in || role == SmRole::mailbox_in;
+        }
+        if (has_out && has_in) continue;
+        const std::string missing = !has_out && !has_in ? "neither an MBoxOut nor an MBoxIn Sm"
+                                    : !has_out        ? "no MBoxOut Sm (master -> slave)"
+                                                      : "no MBoxIn Sm (slave -> master)";
+        context.report(device->mailbox->pos, "the device declares a Mailbox but has " + missing +
+                                                 "; mailbox protocols need SM0 = MBoxOut (#x26) and SM1 = MBoxIn (#x22)");
+    }
+}
+
+// ---- mailbox-protocol-missing ---------------------------------------------------------------
+
+void check_protocol_missing(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->mailbox || device->mailbox->protocol_bits() != 0) continue;
+        context.report(device->mailbox->pos,
+                       "Mailbox names no protocol (AoE, EoE, CoE, FoE, SoE, VoE); the SII mailbox protocol word 0x1C would "
+                       "be 0 and masters would not use the mailbox");
+    }
+}
+
+}  // namespace
+
+void add_mailbox(std::vector<Rule>& out) {
+    out.push_back(Rule{
+        "mailbox-data-link-layer", Severity::warning, "Mailbox without DataLinkLayer=\"true\"",
+        "The mailbox data link layer (counter and repeat request, ETG.1000.4 mailbox) lets a master recover lost "
+        "mailbox frames; the conformance tool checks that devices with a mailbox declare it (CTT TF-1300 1-9 "
+        "'Device:Mailbox:DataLinkLayer'), the SOES tutorial marks the attribute mandatory, and the SII general "
+        "category carries it as flag MBoxDataLinkLayer (ETG.2010). The schema default is false, so leaving it out "
+        "declares no support.",
+        "<Mailbox><CoE SdoInfo=\"true\"/></Mailbox>", "<Mailbox DataLinkLayer=\"true\"><CoE SdoInfo=\"true\"/></Mailbox>",
+        &check_data_link_layer});
+    out.push_back(Rule{
+        "mailbox-sm-missing", Severity::error, "A Mailbox without MBoxOut and MBoxIn SyncManagers",
+        "Mailbox protocols travel through the standard mailbox: SM0 (MBoxOut, master -> slave) and SM1 (MBoxIn, slave "
+        "-> master), whose addresses and sizes also fill SII words 0x18-0x1B (ETG.2010; SOES tutorial; servo manuals "
+        "§6.1.1 R1). A Mailbox element without them advertises protocols the master cannot reach.",
+        "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Mailbox DataLinkLayer=\"true\"><CoE/></Mailbox>",
+        "<Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... ControlByte=\"#x22\">MBoxIn</Sm>...<Mailbox "
+        "DataLinkLayer=\"true\"><CoE/></Mailbox>",
+        &check_sm_missing});
+    out.push_back(Rule{
+        "mailbox-protocol-missing", Severity::warning, "A Mailbox that names no protocol",
+        "The protocols listed under Mailbox (AoE, EoE, CoE, FoE, SoE, VoE) become the SII mailbox protocol word 0x1C "
+        "(ETG.2010; CTT TF-1300 2-5 compares them). An empty Mailbox advertises a mailbox that carries nothing, so "
+        "masters skip it; either list the protocols the firmware serves or remove the element.",
+        "<Mailbox DataLinkLayer=\"true\"/>", "<Mailbox DataLinkLayer=\"true\"><CoE SdoInfo=\"true\"/></Mailbox>",
+        &check_protocol_missing});
+}
 
 }  // namespace esi::rules

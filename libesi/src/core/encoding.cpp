@@ -108,11 +108,11 @@ DecodedText decode_utf16(std::string_view bytes, bool little_endian) {
                     continue;
                 }
             }
-            if (out.first_invalid_offset == std::string::npos) out.first_invalid_offset = i;
+            if (out.first_invalid_offset == std::string::npos) out.first_invalid_offset = out.utf8.size();
             out.utf8 += replacement;
             i += 2;
         } else if (unit >= 0xDC00 && unit <= 0xDFFF) {
-            if (out.first_invalid_offset == std::string::npos) out.first_invalid_offset = i;
+            if (out.first_invalid_offset == std::string::npos) out.first_invalid_offset = out.utf8.size();
             out.utf8 += replacement;
             i += 2;
         } else {
@@ -120,7 +120,7 @@ DecodedText decode_utf16(std::string_view bytes, bool little_endian) {
             i += 2;
         }
     }
-    if (i < bytes.size() && out.first_invalid_offset == std::string::npos) out.first_invalid_offset = i;
+    if (i < bytes.size() && out.first_invalid_offset == std::string::npos) out.first_invalid_offset = out.utf8.size();
     return out;
 }
 
@@ -139,7 +139,7 @@ DecodedText decode_8bit(std::string_view bytes, bool windows1252) {
         } else if (windows1252 && c < 0xA0) {
             const char16_t mapped = cp1252_high[c - 0x80];
             if (mapped == 0) {
-                if (out.first_invalid_offset == std::string::npos) out.first_invalid_offset = i;
+                if (out.first_invalid_offset == std::string::npos) out.first_invalid_offset = out.utf8.size();
                 out.utf8 += replacement;
             } else {
                 append_utf8(out.utf8, mapped);
@@ -180,6 +180,32 @@ bool is_valid_utf8(std::string_view text, std::size_t* first_bad) {
     return true;
 }
 
+DecodedText decode_xml_bytes_owned(std::string bytes) {
+    // Plain UTF-8 (with or without BOM, no 8-bit declaration): keep the buffer.
+    const bool utf16 = bytes.size() >= 2 && ((static_cast<unsigned char>(bytes[0]) == 0xFF && static_cast<unsigned char>(bytes[1]) == 0xFE) ||
+                                             (static_cast<unsigned char>(bytes[0]) == 0xFE && static_cast<unsigned char>(bytes[1]) == 0xFF) ||
+                                             bytes[0] == '\0' || bytes[1] == '\0');
+    if (!utf16) {
+        const bool bom = bytes.size() >= 3 && std::string_view(bytes).substr(0, 3) == "\xEF\xBB\xBF";
+        const std::string_view body = std::string_view(bytes).substr(bom ? 3 : 0);
+        const std::string declared = declared_encoding(body);
+        const std::string name = upper(declared);
+        const bool eight_bit = !bom && (name == "ISO-8859-1" || name == "ISO8859-1" || name == "LATIN1" || name == "ISO_8859-1" ||
+                                        name == "ISO-8859-15" || name == "WINDOWS-1252" || name == "CP1252");
+        if (!eight_bit && is_valid_utf8(body)) {
+            DecodedText out;
+            out.encoding = bom ? SourceEncoding::utf8_bom : SourceEncoding::utf8;
+            out.declared = declared;
+            if (bom) bytes.erase(0, 3);
+            out.utf8 = std::move(bytes);
+            return out;
+        }
+    }
+    DecodedText out = decode_xml_bytes(std::string_view(bytes));
+    std::string().swap(bytes);  // the raw bytes are no longer needed
+    return out;
+}
+
 DecodedText decode_xml_bytes(std::string_view bytes) {
     // Byte-order marks first, then the UTF-16 shape of "<?" without a BOM.
     if (bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0xFF && static_cast<unsigned char>(bytes[1]) == 0xFE)
@@ -216,7 +242,7 @@ DecodedText decode_xml_bytes(std::string_view bytes) {
         return out;
     }
     // Replace invalid sequences so that the rest of the file can still be read.
-    out.first_invalid_offset = bad + (bom ? 3 : 0);
+    out.first_invalid_offset = bad;
     out.utf8.reserve(bytes.size() + 16);
     const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
     std::size_t i = 0;

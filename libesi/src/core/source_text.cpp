@@ -5,32 +5,74 @@
 
 namespace esi {
 
-SourceText::SourceText(std::string path, std::string utf8) : path_(std::move(path)), text_(std::move(utf8)) {
-    line_starts_.reserve(text_.size() / 40 + 1);
-    line_starts_.push_back(0);
-    const char* begin = text_.data();
-    const char* end = begin + text_.size();
-    for (const char* p = begin; p < end;) {
-        const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-        if (!nl) break;
-        p = static_cast<const char*>(nl) + 1;
-        line_starts_.push_back(static_cast<std::size_t>(p - begin));
+namespace {
+
+constexpr std::uint64_t high_bits = 0x8080808080808080ull;
+
+std::uint64_t load8(const char* p) {
+    std::uint64_t v = 0;
+    std::memcpy(&v, p, 8);
+    return v;
+}
+
+}  // namespace
+
+std::size_t count_code_points(std::string_view text) {
+    // Code points = bytes that are not UTF-8 continuation bytes (10xxxxxx); ASCII runs are
+    // skipped eight bytes at a time.
+    std::size_t count = 0;
+    std::size_t i = 0;
+    while (i < text.size()) {
+        if (i + 8 <= text.size() && (load8(text.data() + i) & high_bits) == 0) {
+            count += 8;
+            i += 8;
+            continue;
+        }
+        count += (static_cast<unsigned char>(text[i]) & 0xC0) != 0x80;
+        ++i;
     }
+    return count;
+}
+
+std::size_t count_newlines(std::string_view text) {
+    std::size_t count = 0;
+    for (const char* p = text.data(), *end = text.data() + text.size(); p < end; ++count) {
+        p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+        if (!p) break;
+        ++p;
+    }
+    return count;
+}
+
+SourceText::SourceText(std::string path, std::string utf8) : path_(std::move(path)), text_(std::move(utf8)) {}
+
+const std::vector<std::size_t>& SourceText::line_starts() const {
+    std::call_once(index_once_, [this] {
+        line_starts_.reserve(text_.size() / 40 + 1);
+        line_starts_.push_back(0);
+        const char* begin = text_.data();
+        const char* end = begin + text_.size();
+        for (const char* p = begin; p < end;) {
+            const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+            if (!nl) break;
+            p = static_cast<const char*>(nl) + 1;
+            line_starts_.push_back(static_cast<std::size_t>(p - begin));
+        }
+    });
+    return line_starts_;
 }
 
 std::uint32_t SourceText::line_of(std::size_t offset) const {
     offset = std::min(offset, text_.size());
-    const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
-    return static_cast<std::uint32_t>(it - line_starts_.begin());
+    const auto& starts = line_starts();
+    const auto it = std::upper_bound(starts.begin(), starts.end(), offset);
+    return static_cast<std::uint32_t>(it - starts.begin());
 }
 
 std::uint32_t SourceText::code_points(std::size_t from, std::size_t to) const {
-    std::uint32_t count = 0;
-    for (std::size_t i = from; i < to && i < text_.size(); ++i) {
-        // Skip UTF-8 continuation bytes.
-        if ((static_cast<unsigned char>(text_[i]) & 0xC0) != 0x80) ++count;
-    }
-    return count;
+    to = std::min(to, text_.size());
+    if (from >= to) return 0;
+    return static_cast<std::uint32_t>(count_code_points(std::string_view(text_).substr(from, to - from)));
 }
 
 SourcePos SourceText::position_of(std::size_t offset) const {
@@ -44,10 +86,11 @@ SourcePos PositionCursor::position_of(std::size_t offset) {
     offset = std::min(offset, text.size());
     SourcePos pos;
     if (offset >= last_offset_) {
-        // Walk forward from the previous position: newlines in between move the line.
-        const char* begin = text.data();
+        // Walk forward from the previous position: memchr finds the newlines in between, and only
+        // the part of the last line before the offset is counted code point by code point.
+        const char* const begin = text.data();
         const char* p = begin + last_offset_;
-        const char* end = begin + offset;
+        const char* const end = begin + offset;
         std::uint32_t line = last_.line;
         const char* line_begin = nullptr;
         while (p < end) {
@@ -57,9 +100,9 @@ SourcePos PositionCursor::position_of(std::size_t offset) {
             p = static_cast<const char*>(nl) + 1;
             line_begin = p;
         }
-        pos.line = line;
-        pos.column = line_begin ? source_.code_points(static_cast<std::size_t>(line_begin - begin), offset) + 1
-                                : last_.column + source_.code_points(last_offset_, offset);
+        const char* counted_from = line_begin ? line_begin : begin + last_offset_;
+        const auto counted = static_cast<std::uint32_t>(count_code_points(std::string_view(counted_from, static_cast<std::size_t>(end - counted_from))));
+        pos = SourcePos{line, line_begin ? counted + 1 : last_.column + counted};
     } else {
         pos = source_.position_of(offset);
     }
@@ -69,9 +112,10 @@ SourcePos PositionCursor::position_of(std::size_t offset) {
 }
 
 std::string_view SourceText::line(std::uint32_t line_number) const {
-    if (line_number == 0 || line_number > line_starts_.size()) return {};
-    const std::size_t start = line_starts_[line_number - 1];
-    std::size_t end = line_number < line_starts_.size() ? line_starts_[line_number] : text_.size();
+    const auto& starts = line_starts();
+    if (line_number == 0 || line_number > starts.size()) return {};
+    const std::size_t start = starts[line_number - 1];
+    std::size_t end = line_number < starts.size() ? starts[line_number] : text_.size();
     while (end > start && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;
     return std::string_view(text_).substr(start, end - start);
 }

@@ -62,7 +62,6 @@ void apply_settings(Diagnostics& diagnostics, const EffectiveConfig& config) {
 FileReport lint_read_result(ReadResult read, const std::string& path, const EffectiveConfig& config, const SchemaSet* schemas) {
     FileReport report;
     report.path = path;
-    report.source = read.source;
     Diagnostics diagnostics = std::move(read.diagnostics);
     for (const auto& d : diagnostics)
         if (d.rule == "io-error") report.unreadable = true;
@@ -76,6 +75,12 @@ FileReport lint_read_result(ReadResult read, const std::string& path, const Effe
                     items.end());
     }
     diagnostics.sort();
+    if (read.source) {
+        for (const auto& d : diagnostics) {
+            if (d.pos.known() && !report.quoted_lines.count(d.pos.line))
+                report.quoted_lines.emplace(d.pos.line, std::string(read.source->line(d.pos.line)));
+        }
+    }
     report.diagnostics = std::move(diagnostics);
     return report;
 }

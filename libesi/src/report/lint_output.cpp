@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
+#include <map>
+
 #include <nlohmann/json.hpp>
 
 #include "esi/check/registry.hpp"
@@ -15,9 +18,10 @@ using ordered_json = nlohmann::ordered_json;
 // Every diagnostic of the report in output order: config problems first, then each file's.
 template <class F>
 void for_each_diagnostic(const LintReport& report, F&& f) {
-    for (const auto& d : report.config_diagnostics) f(d, static_cast<const SourceText*>(nullptr));
+    static const std::map<std::uint32_t, std::string> no_lines;
+    for (const auto& d : report.config_diagnostics) f(d, no_lines);
     for (const auto& file : report.files)
-        for (const auto& d : file.diagnostics) f(d, file.source.get());
+        for (const auto& d : file.diagnostics) f(d, file.quoted_lines);
 }
 
 std::string location(const std::string& path, SourcePos pos) {
@@ -98,11 +102,12 @@ std::string render_text(const LintReport& report, const TextOutputOptions& optio
         if (!options.color) return "";
         return s == Severity::error ? "\x1b[1;31m" : s == Severity::warning ? "\x1b[1;35m" : "\x1b[1;36m";
     };
-    for_each_diagnostic(report, [&](const Diagnostic& d, const SourceText* source) {
+    for_each_diagnostic(report, [&](const Diagnostic& d, const std::map<std::uint32_t, std::string>& lines) {
         out += fmt::format("{}{}{}: {}{}{}: {} [{}]\n", bold, location(d.path, d.pos), reset, color_of(d.severity),
                            to_string(d.severity), reset, d.message, d.rule);
-        if (options.show_source && source && d.pos.known()) {
-            const std::string_view line = source->line(d.pos.line);
+        if (options.show_source && d.pos.known()) {
+            const auto it = lines.find(d.pos.line);
+            const std::string_view line = it == lines.end() ? std::string_view{} : std::string_view(it->second);
             if (!line.empty()) {
                 out += fmt::format("{:>6} | {}\n", d.pos.line, line);
                 out += fmt::format("{:>6} | {}\n", "", caret_line(line, d.pos.column));
@@ -116,7 +121,7 @@ std::string render_text(const LintReport& report, const TextOutputOptions& optio
 
 std::string render_json(const LintReport& report) {
     ordered_json diagnostics = ordered_json::array();
-    for_each_diagnostic(report, [&](const Diagnostic& d, const SourceText*) {
+    for_each_diagnostic(report, [&](const Diagnostic& d, const std::map<std::uint32_t, std::string>&) {
         ordered_json item{{"path", d.path},
                           {"line", d.pos.line},
                           {"column", d.pos.column},
@@ -152,7 +157,7 @@ std::string render_sarif(const LintReport& report, std::string_view tool_version
                          {"help", {{"text", fmt::format("{}\n\nBad:\n{}\n\nGood:\n{}", r.rationale, r.bad_example, r.good_example)}}}});
     }
     ordered_json results = ordered_json::array();
-    for_each_diagnostic(report, [&](const Diagnostic& d, const SourceText*) {
+    for_each_diagnostic(report, [&](const Diagnostic& d, const std::map<std::uint32_t, std::string>&) {
         ordered_json physical{{"artifactLocation", {{"uri", to_uri(d.path)}}}};
         if (d.pos.known()) {
             physical["region"] = {{"startLine", d.pos.line}, {"startColumn", std::max<std::uint32_t>(d.pos.column, 1)}};
@@ -190,7 +195,7 @@ std::string render_sarif(const LintReport& report, std::string_view tool_version
 
 std::string render_github(const LintReport& report) {
     std::string out;
-    for_each_diagnostic(report, [&](const Diagnostic& d, const SourceText*) {
+    for_each_diagnostic(report, [&](const Diagnostic& d, const std::map<std::uint32_t, std::string>&) {
         const std::string_view command = d.severity == Severity::error ? "error" : d.severity == Severity::warning ? "warning" : "notice";
         std::string properties = "file=" + github_escape_property(d.path);
         if (d.pos.known()) properties += fmt::format(",line={},col={}", d.pos.line, d.pos.column);
@@ -219,6 +224,21 @@ std::string render_rule_list_json() {
                          {"bad_example", r.bad_example},
                          {"good_example", r.good_example}});
     return ordered_json{{"rules", std::move(rules)}}.dump(2) + "\n";
+}
+
+std::string render_rule_list_markdown() {
+    std::string out =
+        "# esi-lint rules\n\n"
+        "Generated from the rule catalogue (`esi-lint --list-rules --format markdown`); a test keeps this file in sync.\n"
+        "Every rule can be switched off or re-graded in `.esi-lint.yaml` (see lint-config.md) and suppressed inline with\n"
+        "`<!-- esi-lint: disable=RULE -->`.\n\n"
+        "| Rule | Default | Summary |\n|---|---|---|\n";
+    for (const Rule& r : all_rules()) out += fmt::format("| [`{}`](#{}) | {} | {} |\n", r.id, r.id, to_string(r.default_severity), r.summary);
+    for (const Rule& r : all_rules()) {
+        out += fmt::format("\n## {}\n\n**{}** (default severity: {})\n\n{}\n\nBad:\n\n```xml\n{}\n```\n\nGood:\n\n```xml\n{}\n```\n",
+                           r.id, r.summary, to_string(r.default_severity), r.rationale, r.bad_example, r.good_example);
+    }
+    return out;
 }
 
 std::string render_rule_explanation(std::string_view rule_id) {

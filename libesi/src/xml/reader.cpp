@@ -156,8 +156,9 @@ private:
                 previous = c.name();
             }
         }
-        // parse_embed_pcdata stores a lone text child in the element's own value.
-        if (e.text.empty() && n.value()[0] != '\0') e.text = n.value();
+        // parse_embed_pcdata stores the text that comes before any child element in the
+        // element's own value, not as a child: it is the start of the text (mixed content).
+        if (n.value()[0] != '\0') e.text.insert(0, n.value());
         return e;
     }
 
@@ -220,8 +221,10 @@ private:
 
 bool Reader::read_image(Images& images, const pugi::xml_node c, std::string_view name) {
     if (name == "ImageData16x14") images.image_data16x14 = hex(c);
-    else if (name == "Image16x14") images.image16x14 = text_of(c);
-    else if (name == "ImageFile16x14") images.image_file16x14 = text_of(c);
+    else if (name == "Image16x14") {
+        images.image16x14 = text_of(c);
+        images.image16x14_pos = pos_of(c);
+    } else if (name == "ImageFile16x14") images.image_file16x14 = text_of(c);
     else return false;
     return true;
 }
@@ -928,6 +931,12 @@ Object Reader::read_object(const pugi::xml_node n) {
             has_index = true;
             o.index = u32(c).value_or(0);
             o.index_pos = pos_of(c);
+            for (const auto a : c.attributes()) {
+                const std::string_view an = a.name();
+                if (an == "DependOnSlot") o.index_depend_on_slot = boolean(a, c);
+                else if (an == "DependOnSlotGroup") o.index_depend_on_slot_group = boolean(a, c);
+                else if (an == "OverwrittenByModule") o.index_overwritten_by_module = boolean(a, c);
+            }
         } else if (name == "Name") o.names.push_back(localized(c));
         else if (name == "Comment") o.comments.push_back(localized(c));
         else if (name == "Type") {
@@ -1048,19 +1057,6 @@ std::string describe_parse_error(const pugi::xml_parse_result& result) {
     }
 }
 
-// Position of a byte offset in the original (undecoded) bytes: used for encoding faults.
-SourcePos raw_position(std::string_view bytes, std::size_t offset) {
-    std::uint32_t line = 1;
-    std::size_t line_start = 0;
-    for (std::size_t i = 0; i < offset && i < bytes.size(); ++i) {
-        if (bytes[i] == '\n') {
-            ++line;
-            line_start = i + 1;
-        }
-    }
-    return SourcePos{line, static_cast<std::uint32_t>(offset - line_start + 1)};
-}
-
 SourcePos error_position(const SourceText& source, const pugi::xml_parse_result& result) {
     auto offset = static_cast<std::size_t>(result.offset < 0 ? 0 : result.offset);
     offset = std::min(offset, source.text().size());
@@ -1076,14 +1072,18 @@ SourcePos error_position(const SourceText& source, const pugi::xml_parse_result&
 }  // namespace
 
 ReadResult read_esi(std::string_view bytes, std::string path, const ReadOptions& options) {
+    return read_esi_owned(std::string(bytes), std::move(path), options);
+}
+
+ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOptions& options) {
     ReadResult result;
-    DecodedText decoded = decode_xml_bytes(bytes);
+    DecodedText decoded = decode_xml_bytes_owned(std::move(bytes_in));
     auto source = std::make_shared<SourceText>(path, std::move(decoded.utf8));
     result.source = source;
 
     if (decoded.first_invalid_offset != std::string::npos) {
         const bool utf16 = decoded.encoding == SourceEncoding::utf16le || decoded.encoding == SourceEncoding::utf16be;
-        const SourcePos pos = utf16 ? SourcePos{} : raw_position(bytes, decoded.first_invalid_offset);
+        const SourcePos pos = source->position_of(decoded.first_invalid_offset);
         result.diagnostics.emplace(Severity::error, "xml-encoding",
                                    utf16 ? "input is not valid UTF-16 (lone surrogate or odd length); the bad units were replaced"
                                          : "input is not valid " + std::string(to_string(decoded.encoding)) +
@@ -1157,7 +1157,7 @@ ReadResult read_esi_file(const std::filesystem::path& path, const ReadOptions& o
         result.diagnostics.emplace(Severity::error, "io-error", "cannot read file: " + error, path.string(), SourcePos{});
         return result;
     }
-    return read_esi(*bytes, path.string(), options);
+    return read_esi_owned(std::move(*bytes), path.string(), options);
 }
 
 }  // namespace esi

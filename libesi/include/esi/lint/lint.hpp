@@ -4,6 +4,7 @@
 // deterministic order.
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,7 +28,9 @@ struct LintOptions {
 struct FileReport {
     std::string path;
     Diagnostics diagnostics;  // sorted
-    SourceTextPtr source;     // for quoting lines; may be null
+    // The source lines the diagnostics point at (line number -> text), kept so reports can quote
+    // them without holding every file's text in memory.
+    std::map<std::uint32_t, std::string> quoted_lines;
     bool unreadable = false;  // io-error: the file could not be read at all
 };
 

@@ -80,6 +80,7 @@ struct Images {
     std::optional<std::string> image16x14;  // deprecated file reference
     std::optional<std::string> image_file16x14;
     std::optional<HexData> image_data16x14;
+    SourcePos image16x14_pos;  // where the deprecated Image16x14 element was written
     [[nodiscard]] bool empty() const { return !image16x14 && !image_file16x14 && !image_data16x14; }
 };
 

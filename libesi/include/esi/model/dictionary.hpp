@@ -51,6 +51,11 @@ struct ObjectSubItemInfo {
 struct Object {
     std::uint32_t index = 0;
     SourcePos index_pos;
+    // Index@DependOnSlot / @DependOnSlotGroup / @OverwrittenByModule: in module dictionaries the
+    // index moves with the slot (ETG.2000 ObjectType; modular devices, ETG.2001).
+    std::optional<bool> index_depend_on_slot;
+    std::optional<bool> index_depend_on_slot_group;
+    std::optional<bool> index_overwritten_by_module;
     Names names;
     Names comments;
     std::string type;  // a DataType name (basic or defined in DataTypes)

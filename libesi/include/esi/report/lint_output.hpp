@@ -22,6 +22,8 @@ struct TextOutputOptions {
 // The rule catalogue: text (id, severity, summary) or JSON (every field).
 [[nodiscard]] std::string render_rule_list_text();
 [[nodiscard]] std::string render_rule_list_json();
+// The catalogue as a Markdown document (docs/rules.md is this, kept in sync by a test).
+[[nodiscard]] std::string render_rule_list_markdown();
 // One rule in full: rationale, bad and good example. Empty when the id is unknown.
 [[nodiscard]] std::string render_rule_explanation(std::string_view rule_id);
 

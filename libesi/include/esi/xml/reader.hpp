@@ -30,6 +30,8 @@ struct ReadResult {
 
 // `path` is used in diagnostics; the bytes may come from anywhere (a file, stdin, memory).
 [[nodiscard]] ReadResult read_esi(std::string_view bytes, std::string path, const ReadOptions& options = {});
+// Same, taking ownership of the bytes: valid UTF-8 input is used in place, without a copy.
+[[nodiscard]] ReadResult read_esi_owned(std::string bytes, std::string path, const ReadOptions& options = {});
 
 // Reads a file; a missing or unreadable file gives an `io-error` diagnostic.
 [[nodiscard]] ReadResult read_esi_file(const std::filesystem::path& path, const ReadOptions& options = {});

@@ -1,0 +1,126 @@
+// esi-lint throughput on the real corpus, side by side with bare pugixml parsing:
+//   1. bare pugixml parse (MB/s), 2. read into the model, 3. read + all rules on one thread,
+//   4. wall time of `esi-lint -j <cores>` over the whole corpus and its peak memory.
+// Each figure is the median of several runs. Usage: lint_corpus [CORPUS_DIR] [RUNS]
+
+#include <pugixml.hpp>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "esi/lint/lint.hpp"
+
+extern char** environ;
+
+namespace {
+
+struct Input {
+    std::filesystem::path path;
+    std::string bytes;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+double time_runs(int runs, const std::function<void()>& f) {
+    std::vector<double> seconds;
+    for (int i = 0; i < runs; ++i) {
+        const auto t0 = std::chrono::steady_clock::now();
+        f();
+        seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    }
+    return median(seconds);
+}
+
+// Runs a command, returns {wall seconds, peak RSS in MB}.
+std::pair<double, double> run_measured(std::vector<std::string> argv) {
+    std::vector<char*> args;
+    for (auto& a : argv) args.push_back(a.data());
+    args.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", 0x1 /*O_WRONLY*/, 0);
+    const auto t0 = std::chrono::steady_clock::now();
+    pid_t pid = 0;
+    if (posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ) != 0) return {-1, -1};
+    int status = 0;
+    rusage usage{};
+    wait4(pid, &status, 0, &usage);
+    posix_spawn_file_actions_destroy(&actions);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return {wall, static_cast<double>(usage.ru_maxrss) / 1024.0};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const std::filesystem::path dir = argc > 1 ? argv[1] : std::filesystem::path(ESI_SHARED_DIR) / "corpus" / "esi";
+    const int runs = argc > 2 ? std::atoi(argv[2]) : 7;
+    if (!std::filesystem::is_directory(dir)) {
+        std::printf("lint_corpus: %s not present; nothing to measure\n", dir.c_str());
+        return 0;
+    }
+    std::vector<Input> inputs;
+    std::size_t total = 0;
+    std::size_t largest = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+        if (e.path().extension() != ".xml") continue;
+        std::string error;
+        auto bytes = esi::read_file_bytes(e.path(), error);
+        if (!bytes) continue;
+        total += bytes->size();
+        largest = std::max(largest, bytes->size());
+        inputs.push_back({e.path(), std::move(*bytes)});
+    }
+    std::sort(inputs.begin(), inputs.end(), [](const Input& a, const Input& b) { return a.path < b.path; });
+    const double mb = static_cast<double>(total) / 1e6;
+    std::printf("corpus: %zu files, %.1f MB (largest %.1f MB), median of %d runs\n", inputs.size(), mb,
+                static_cast<double>(largest) / 1e6, runs);
+
+    const double bare = time_runs(runs, [&] {
+        for (const auto& in : inputs) {
+            pugi::xml_document doc;
+            doc.load_buffer(in.bytes.data(), in.bytes.size());
+        }
+    });
+    const double read = time_runs(runs, [&] {
+        for (const auto& in : inputs) (void)esi::read_esi(in.bytes, in.path.string());
+    });
+    std::size_t diagnostics = 0;
+    const double lint = time_runs(runs, [&] {
+        diagnostics = 0;
+        for (const auto& in : inputs) diagnostics += esi::lint_bytes(in.bytes, in.path.string(), {}).diagnostics.size();
+    });
+    std::printf("%-44s %8.1f ms %8.1f MB/s\n", "bare pugixml parse (1 thread)", bare * 1e3, mb / bare);
+    std::printf("%-44s %8.1f ms %8.1f MB/s\n", "read into the model (1 thread)", read * 1e3, mb / read);
+    std::printf("%-44s %8.1f ms %8.1f MB/s  (%zu diagnostics)\n", "lint, all rules (1 thread)", lint * 1e3, mb / lint, diagnostics);
+    std::printf("%-44s %8.2f\n", "lint throughput / bare parse throughput", bare / lint);
+
+    const std::filesystem::path esi_lint = std::filesystem::path(argv[0]).parent_path().parent_path() / "cli" / "esi-lint";
+    if (std::filesystem::exists(esi_lint)) {
+        const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+        std::vector<double> walls;
+        double peak = 0;
+        for (int i = 0; i < runs; ++i) {
+            const auto [wall, rss] = run_measured({esi_lint.string(), "-j", std::to_string(cores), "--format", "json",
+                                                   "--fail-on", "never", dir.string()});
+            walls.push_back(wall);
+            peak = std::max(peak, rss);
+        }
+        std::printf("%-44s %8.1f ms  (-j %u)\n", "esi-lint whole corpus, wall time", median(walls) * 1e3, cores);
+        std::printf("%-44s %8.1f MB  (budget 4 x largest + 30 MB = %.1f MB)\n", "esi-lint peak memory (max RSS)", peak,
+                    4.0 * static_cast<double>(largest) / 1048576.0 + 30.0);
+    }
+    return 0;
+}

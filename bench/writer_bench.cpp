@@ -1,0 +1,70 @@
+// ESI writer speed on the largest corpus files: for each, the time to read it (for scale) and
+// the time to write the model back (best of several runs), with the output size and rate.
+// Usage: writer_bench [FILE...]   (default: the 5 largest files of ../shared/corpus/esi)
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "esi/xml/reader.hpp"
+#include "esi/xml/writer.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
+
+template <class F>
+double best_of(int runs, F&& f) {
+    double best = 1e300;
+    for (int i = 0; i < runs; ++i) {
+        const auto start = Clock::now();
+        f();
+        best = std::min(best, milliseconds(Clock::now() - start));
+    }
+    return best;
+}
+
+std::vector<std::filesystem::path> largest_corpus_files(std::size_t count) {
+    std::vector<std::pair<std::uintmax_t, std::filesystem::path>> files;
+    const std::filesystem::path dir = std::filesystem::path(ESI_SHARED_DIR) / "corpus" / "esi";
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
+        if (entry.path().extension() == ".xml") files.emplace_back(entry.file_size(), entry.path());
+    std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::vector<std::filesystem::path> out;
+    for (std::size_t i = 0; i < files.size() && i < count; ++i) out.push_back(files[i].second);
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::vector<std::filesystem::path> files;
+    for (int i = 1; i < argc; ++i) files.emplace_back(argv[i]);
+    if (files.empty()) files = largest_corpus_files(5);
+    if (files.empty()) {
+        std::printf("no input files (pass some, or provide ../shared/corpus/esi)\n");
+        return 0;
+    }
+    std::printf("%-55s %9s %9s %9s %9s\n", "file", "in MB", "read ms", "write ms", "MB/s out");
+    for (const auto& path : files) {
+        std::string error;
+        const auto bytes = esi::read_file_bytes(path, error);
+        if (!bytes) continue;
+        esi::ReadOptions options;
+        options.keep_source = false;
+        std::optional<esi::EsiDocument> document;
+        const double read_ms = best_of(3, [&] { document = esi::read_esi(*bytes, path.string(), options).document; });
+        if (!document) continue;
+        std::string written;
+        const double write_ms = best_of(10, [&] { written = esi::write_esi(*document); });
+        std::printf("%-55.55s %9.2f %9.2f %9.2f %9.0f\n", path.filename().string().c_str(), static_cast<double>(bytes->size()) / 1e6,
+                    read_ms, write_ms, static_cast<double>(written.size()) / 1e6 / (write_ms / 1e3));
+    }
+    return 0;
+}
