@@ -178,3 +178,35 @@ TEST(EsiGenCli, UsageErrors) {
 }
 
 }  // namespace
+
+namespace {
+
+// The ESI output is the writer's (esi::write_esi); esi-gen must hand it the whole document and
+// write it where the plan says.
+TEST(EsiGenCliEsi, EsiOutputOfTheSampleIsLintCleanAndSchemaValid) {
+    TempDir dir;
+    const auto r = tc::esi_gen(tc::sample_esi(), dir.path(), {"--only", "esi"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto written = dir / "example-digital-io.xml";
+    ASSERT_TRUE(std::filesystem::exists(written));
+    const auto lint = run({tool("esi-lint").string(), written.string()});
+    EXPECT_EQ(lint.exit_code, 0) << lint.out;
+    EXPECT_NE(lint.out.find("0 errors, 0 warnings, 0 infos in 1 file"), std::string::npos) << lint.out;
+
+    const auto xsd = esi::test::shared_dir() / "corpus" / "schema" / "v1.17_siitool-2022" / "EtherCATInfo.xsd";
+    if (!std::filesystem::exists(xsd) || !tc::have_program("xmllint")) GTEST_SKIP() << "no ETG schema or xmllint: schema check skipped";
+    const auto valid = run({"xmllint", "--noout", "--schema", xsd.string(), written.string()});
+    EXPECT_EQ(valid.exit_code, 0) << valid.err;
+}
+
+TEST(EsiGenCliEsi, RefusesToOverwriteTheSource) {
+    TempDir dir;
+    write_text(dir / "device.xml", read_text(tc::sample_esi()));
+    const auto r = tc::esi_gen(dir / "device.xml", dir.path(), {"--only", "esi,cpp"});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("is the source file itself"), std::string::npos) << r.err;
+    EXPECT_EQ(read_text(dir / "device.xml"), read_text(tc::sample_esi()));
+    EXPECT_FALSE(std::filesystem::exists(dir / "object_dictionary.hpp"));
+}
+
+}  // namespace
