@@ -78,9 +78,12 @@ int main(int argc, char** argv) {
 
     const esi::DiffLabels labels{old_path, new_path};
     std::string output;
-    if (format == "json") output = esi::render_diff_json(result);
-    else if (format == "markdown") output = esi::render_diff_markdown(result, labels);
-    else output = esi::render_diff_text(result, labels);
+    if (format == "json")
+        output = esi::render_diff_json(result);
+    else if (format == "markdown")
+        output = esi::render_diff_markdown(result, labels);
+    else
+        output = esi::render_diff_text(result, labels);
     std::fwrite(output.data(), 1, output.size(), stdout);
     std::fflush(stdout);
     return reaches(result.verdict, fail_on) ? exit_changes : exit_clean;

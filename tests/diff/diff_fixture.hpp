@@ -268,7 +268,8 @@ inline DiffResult diff_texts(const std::string& old_xml, const std::string& new_
 inline std::string describe(const DiffResult& r) {
     std::string out;
     for (const auto& c : r.changes)
-        out += std::string(to_string(c.change_class)) + " " + std::string(to_string(c.kind)) + " " + c.path + ": " + c.message + "\n";
+        out += std::string(to_string(c.change_class)) + " " + std::string(to_string(c.kind)) + " " + c.path + ": " + c.message +
+               "\n";
     return out.empty() ? std::string("(no changes)\n") : out;
 }
 

@@ -60,7 +60,8 @@ TEST(EsiDiffCli, JsonAndMarkdownFormats) {
 
 TEST(EsiDiffCli, DeviceSelectorAcceptsDecimalAndHexWithRevision) {
     const auto hash = run({tool("esi-diff"), "--device", "#x2002", "--format", "json", data("old.xml"), data("new.xml")});
-    const auto c_hex = run({tool("esi-diff"), "--device", "0x2002:0x20000", "--format", "json", data("old.xml"), data("new.xml")});
+    const auto c_hex =
+        run({tool("esi-diff"), "--device", "0x2002:0x20000", "--format", "json", data("old.xml"), data("new.xml")});
     const auto decimal = run({tool("esi-diff"), "--device", "8194", "--format", "json", data("old.xml"), data("new.xml")});
     EXPECT_EQ(hash.out, c_hex.out);
     EXPECT_EQ(hash.out, decimal.out);

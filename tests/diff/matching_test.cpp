@@ -22,7 +22,8 @@ std::string catalogue(const std::string& devices) {
   <Descriptions>
     <Groups><Group><Type>G</Type><Name>G</Name></Group></Groups>
     <Devices>
-)" + devices + R"(
+)" + devices +
+           R"(
     </Devices>
   </Descriptions>
 </EtherCATInfo>
@@ -37,7 +38,8 @@ std::string device(const std::string& code, const std::string& revision, int bit
     type += ">" + name + "</Type>";
     return "<Device Physics=\"YY\">" + type + "<Name>" + name + "</Name><GroupType>G</GroupType>" +
            "<Sm StartAddress=\"#x1000\" ControlByte=\"#x20\" Enable=\"1\">Inputs</Sm>" +
-           "<TxPdo Fixed=\"1\" Sm=\"0\"><Index>#x1A00</Index><Name>In</Name><Entry><Index>#x6000</Index><SubIndex>1</SubIndex><BitLen>" +
+           "<TxPdo Fixed=\"1\" "
+           "Sm=\"0\"><Index>#x1A00</Index><Name>In</Name><Entry><Index>#x6000</Index><SubIndex>1</SubIndex><BitLen>" +
            std::to_string(bits) + "</BitLen><Name>x</Name></Entry></TxPdo></Device>\n";
 }
 
@@ -83,7 +85,7 @@ TEST(DiffMatching, PredecessorIsTheHighestLowerRevision) {
     ASSERT_NE(revision, nullptr);
     EXPECT_EQ(revision->device->compared_revision, 2u);
     EXPECT_EQ(esi::test::find_change(r, ChangeKind::pdo_entry_bit_len_changed), nullptr);  // 2 and 3 have the same layout
-    EXPECT_EQ(count(r, ChangeKind::device_removed), 2u);                                 // revisions 1 and 4
+    EXPECT_EQ(count(r, ChangeKind::device_removed), 2u);                                   // revisions 1 and 4
 }
 
 TEST(DiffMatching, LowerRevisionWithoutPredecessorIsAnAddedDevice) {
@@ -118,7 +120,7 @@ TEST(DiffMatching, DuplicateIdentitiesPairInOrder) {
 
 TEST(DiffMatching, DeviceSelectorLimitsTheComparison) {
     std::string x = edit(diff_base, "<BitLen>4</BitLen>", "<BitLen>8</BitLen>");                         // device #x1001
-    x = edit(x, "<BitLen>1</BitLen>", "<BitLen>2</BitLen>");                                              // device #x2002
+    x = edit(x, "<BitLen>1</BitLen>", "<BitLen>2</BitLen>");                                             // device #x2002
     x = edit(x, "<Name LcId=\"1033\">Example Automation</Name>", "<Name LcId=\"1033\">Renamed</Name>");  // the file
     std::string error;
     esi::DiffOptions options;

@@ -36,7 +36,8 @@ void check_golden(const std::string& name, const std::string& actual) {
         GTEST_SKIP() << "golden file " << path << " rewritten";
     }
     ASSERT_TRUE(fs::exists(path)) << "missing golden file " << path << " (run with ESI_UPDATE_GOLDEN=1)";
-    EXPECT_EQ(esi::test::read_text(path), actual) << "output differs from " << path << "; if intended, regenerate with ESI_UPDATE_GOLDEN=1";
+    EXPECT_EQ(esi::test::read_text(path), actual)
+        << "output differs from " << path << "; if intended, regenerate with ESI_UPDATE_GOLDEN=1";
 }
 
 TEST(DiffOutput, TextMatchesGolden) { check_golden("text.txt", esi::render_diff_text(sample_result(), labels)); }
@@ -85,7 +86,8 @@ TEST(DiffOutput, IdenticalFilesSayIdenticalInEveryFormat) {
     const esi::FileDiff diff = esi::diff_files(data("old.xml"), data("old.xml"));
     ASSERT_TRUE(diff.result);
     EXPECT_EQ(esi::render_diff_text(*diff.result, {"a.xml", "b.xml"}), "a.xml -> b.xml: identical (no changes)\n");
-    EXPECT_EQ(nlohmann::json::parse(esi::render_diff_json(*diff.result)), nlohmann::json::parse(R"({"verdict":"identical","changes":[]})"));
+    EXPECT_EQ(nlohmann::json::parse(esi::render_diff_json(*diff.result)),
+              nlohmann::json::parse(R"({"verdict":"identical","changes":[]})"));
     EXPECT_NE(esi::render_diff_markdown(*diff.result, {"a.xml", "b.xml"}).find("identical"), std::string::npos);
 }
 
@@ -104,3 +106,22 @@ TEST(DiffOutput, RenderingIsByteIdenticalOnRerun) {
 }
 
 }  // namespace
+
+#include "diff_fixture.hpp"
+
+TEST(DiffOutputText, LongOrMultiLineTextStaysOnOneShortLine) {
+    const std::string long_text(500, 'x');
+    const std::string old_xml =
+        esi::test::edit(esi::test::diff_base, "</Electrical></Info>", "</Electrical><Note>a</Note></Info>");
+    const std::string new_xml =
+        esi::test::edit(esi::test::diff_base, "</Electrical></Info>", "</Electrical><Note>" + long_text + "</Note></Info>");
+    const esi::DiffResult r = esi::test::diff_texts(old_xml, new_xml);
+    ASSERT_EQ(r.changes.size(), 1u) << esi::test::describe(r);
+    EXPECT_EQ(r.changes[0].new_value, long_text);  // the value itself is complete
+    EXPECT_LT(r.changes[0].message.size(), 200u);  // the message quotes its start
+    // Unmodelled text compares as written (same_content trims only the ends); a line break inside
+    // it must not break the one-line-per-change text format.
+    const std::string multi = esi::test::edit(new_xml, long_text, "first\nsecond");
+    const std::string text = esi::render_diff_text(esi::test::diff_texts(old_xml, multi), {"a", "b"});
+    EXPECT_NE(text.find("from 'a' to 'first second'"), std::string::npos) << text;
+}

@@ -75,6 +75,11 @@ TEST(DiffSemantics, WhitespaceAndCommentsAreNotChanges) {
     expect_identical(diff_base, x);
 }
 
+TEST(DiffSemantics, WhitespaceInsideNamesIsNotAChange) {
+    // A name wrapped over two lines is the same name (the reader trims only the ends).
+    expect_identical(diff_base, edit(diff_base, "A device for tests", "A device\n          for  tests"));
+}
+
 TEST(DiffSemantics, HexDataCaseIsNotAChange) {
     std::string x = diff_base;
     x = edit(x, "<ConfigData>080E00CC</ConfigData>", "<ConfigData>080e00cc</ConfigData>");
@@ -102,26 +107,32 @@ TEST(DiffSemantics, BooleanSpellingAndAbsentFalseAreNotChanges) {
 TEST(DiffSemantics, OrderWithoutMeaningIsNotAChange) {
     std::string x = diff_base;
     // Objects, data types, groups, devices, modules, DC modes, names per language.
-    x = move_block(x, "<Object>\n                <Index>#x8000</Index>", "</Object>", "<Object>\n                <Index>#x1A00</Index>");
+    x = move_block(x, "<Object>\n                <Index>#x8000</Index>", "</Object>",
+                   "<Object>\n                <Index>#x1A00</Index>");
     x = move_block(x, "<DataType>\n                <Name>DT8000</Name>", "</DataType>", "<DataType><Name>USINT</Name>");
     x = move_block(x, "<Group>\n        <Type>Drives</Type>", "</Group>", "<Group SortOrder=\"1\">");
     x = move_block(x, "<Device Physics=\"KK\">", "</Device>", "<Device Physics=\"YY\">");
-    x = move_block(x, "<Module>\n        <Type ModuleIdent=\"#x00001200\"", "</Module>", "<Module>\n        <Type ModuleIdent=\"#x00001100\"");
+    x = move_block(x, "<Module>\n        <Type ModuleIdent=\"#x00001200\"", "</Module>",
+                   "<Module>\n        <Type ModuleIdent=\"#x00001100\"");
     x = move_block(x, "<OpMode>\n            <Name>FreeRun</Name>", "</OpMode>", "<OpMode>\n            <Name>DC</Name>");
     x = move_block(x, "<Name LcId=\"1031\">Beispielgerät</Name>", "</Name>", "<Name LcId=\"1033\">Example device</Name>");
     // A PDO that is not assigned by default may sit anywhere among the PDOs.
-    x = move_block(x, "<TxPdo>\n          <Index>#x1A10</Index>", "</TxPdo>", "<TxPdo Sm=\"3\">\n          <Index>#x1A00</Index>");
+    x = move_block(x, "<TxPdo>\n          <Index>#x1A10</Index>", "</TxPdo>",
+                   "<TxPdo Sm=\"3\">\n          <Index>#x1A00</Index>");
     expect_identical(diff_base, x);
 }
 
 TEST(DiffSemantics, TypeNamesCompareCanonically) {
-    const std::string with = edit(diff_base, "<DataTypes>", "<DataTypes><DataType><Name>ARRAY [0..1] OF BYTE</Name><BitSize>16</BitSize></DataType>");
+    const std::string with =
+        edit(diff_base, "<DataTypes>", "<DataTypes><DataType><Name>ARRAY [0..1] OF BYTE</Name><BitSize>16</BitSize></DataType>");
     expect_identical(with, edit(with, "ARRAY [0..1] OF BYTE", "ARRAY[0..1]  OF BYTE"));
-    expect_identical(diff_base, edit(diff_base, "<SubIdx>1</SubIdx><Name>Filter</Name><Type>UDINT</Type>", "<SubIdx>1</SubIdx><Name>Filter</Name><Type> UDINT </Type>"));
+    expect_identical(diff_base, edit(diff_base, "<SubIdx>1</SubIdx><Name>Filter</Name><Type>UDINT</Type>",
+                                     "<SubIdx>1</SubIdx><Name>Filter</Name><Type> UDINT </Type>"));
 }
 
 TEST(DiffSemantics, MappingLettersAreASet) {
-    const std::string rt = edit(diff_base, "<Access>ro</Access><PdoMapping>T</PdoMapping></Flags>", "<Access>ro</Access><PdoMapping>RT</PdoMapping></Flags>");
+    const std::string rt = edit(diff_base, "<Access>ro</Access><PdoMapping>T</PdoMapping></Flags>",
+                                "<Access>ro</Access><PdoMapping>RT</PdoMapping></Flags>");
     expect_identical(rt, edit(rt, "<PdoMapping>RT</PdoMapping>", "<PdoMapping>TR</PdoMapping>"));
 }
 
@@ -166,9 +177,14 @@ TEST(DiffSemantics, EntryOrderIsLayout) {
 
 TEST(DiffSemantics, ChangedDataTypeShowsOnEveryObjectThatUsesIt) {
     // DT1A00 grows by one entry; object 0x1A00 uses it and must show the new sub-index.
-    std::string x = edit(diff_base, "<SubItem><SubIdx>2</SubIdx><Name>Entry 2</Name><Type>UDINT</Type><BitSize>32</BitSize><BitOffs>48</BitOffs><Flags><Access>ro</Access></Flags></SubItem>",
-                         "<SubItem><SubIdx>2</SubIdx><Name>Entry 2</Name><Type>UDINT</Type><BitSize>32</BitSize><BitOffs>48</BitOffs><Flags><Access>ro</Access></Flags></SubItem>"
-                         "<SubItem><SubIdx>3</SubIdx><Name>Entry 3</Name><Type>UDINT</Type><BitSize>32</BitSize><BitOffs>80</BitOffs><Flags><Access>ro</Access></Flags></SubItem>");
+    std::string x =
+        edit(diff_base,
+             "<SubItem><SubIdx>2</SubIdx><Name>Entry "
+             "2</Name><Type>UDINT</Type><BitSize>32</BitSize><BitOffs>48</BitOffs><Flags><Access>ro</Access></Flags></SubItem>",
+             "<SubItem><SubIdx>2</SubIdx><Name>Entry "
+             "2</Name><Type>UDINT</Type><BitSize>32</BitSize><BitOffs>48</BitOffs><Flags><Access>ro</Access></Flags></SubItem>"
+             "<SubItem><SubIdx>3</SubIdx><Name>Entry "
+             "3</Name><Type>UDINT</Type><BitSize>32</BitSize><BitOffs>80</BitOffs><Flags><Access>ro</Access></Flags></SubItem>");
     const esi::DiffResult r = diff_texts(diff_base, x);
     bool object_entry = false;
     for (const auto& c : r.changes)
@@ -179,7 +195,8 @@ TEST(DiffSemantics, ChangedDataTypeShowsOnEveryObjectThatUsesIt) {
 
 TEST(DiffSemantics, OutputIsDeterministic) {
     const std::string x = edit(edit(diff_base, "<BitLen>4</BitLen>", "<BitLen>8</BitLen>"), "</Devices>",
-                               "<Device Physics=\"YY\"><Type ProductCode=\"#x00003003\" RevisionNo=\"1\">EX-3003</Type><Name>Third</Name></Device></Devices>");
+                               "<Device Physics=\"YY\"><Type ProductCode=\"#x00003003\" "
+                               "RevisionNo=\"1\">EX-3003</Type><Name>Third</Name></Device></Devices>");
     const esi::DiffResult first = diff_texts(diff_base, x);
     const esi::DiffResult second = diff_texts(diff_base, x);
     ASSERT_EQ(first.changes.size(), second.changes.size());

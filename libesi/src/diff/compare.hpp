@@ -26,8 +26,8 @@ void compare_pdos(Recorder& r, const std::string& path, const std::vector<Pdo>& 
                   SourcePos old_parent, SourcePos new_parent);
 
 // A Profile's Dictionary (either may be absent: every object is then added or removed).
-void compare_dictionaries(Recorder& r, const std::string& path, const Dictionary* old_dictionary, const Dictionary* new_dictionary,
-                          SourcePos old_parent, SourcePos new_parent);
+void compare_dictionaries(Recorder& r, const std::string& path, const Dictionary* old_dictionary,
+                          const Dictionary* new_dictionary, SourcePos old_parent, SourcePos new_parent);
 
 void compare_profiles(Recorder& r, const std::string& path, const std::vector<const Profile*>& old_profiles,
                       const std::vector<const Profile*>& new_profiles, SourcePos old_parent, SourcePos new_parent);
@@ -41,8 +41,8 @@ void compare_dc(Recorder& r, const std::string& path, const std::optional<Dc>& o
 void compare_eeproms(Recorder& r, const std::string& path, const std::optional<Eeprom>& old_eeprom,
                      const std::optional<Eeprom>& new_eeprom, SourcePos old_parent, SourcePos new_parent);
 
-void compare_slots(Recorder& r, const std::string& path, const std::optional<Slots>& old_slots, const std::optional<Slots>& new_slots,
-                   SourcePos old_parent, SourcePos new_parent);
+void compare_slots(Recorder& r, const std::string& path, const std::optional<Slots>& old_slots,
+                   const std::optional<Slots>& new_slots, SourcePos old_parent, SourcePos new_parent);
 
 // Vendor, groups and modules: the parts of a file that belong to no single device.
 void compare_vendors(Recorder& r, const Vendor* old_vendor, const Vendor* new_vendor, SourcePos old_parent, SourcePos new_parent,

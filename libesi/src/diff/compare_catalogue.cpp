@@ -18,8 +18,8 @@ void compare_vendors(Recorder& r, const Vendor* a, const Vendor* b, SourcePos ol
     const SourcePos px = a ? a->pos : old_parent;
     const SourcePos py = b ? b->pos : new_parent;
     if (compare_id)
-        r.value(ChangeKind::vendor_id_changed, "Vendor/Id", "vendor Id", hex(x.id, 8), hex(y.id, 8), x.id_pos.known() ? x.id_pos : px,
-                y.id_pos.known() ? y.id_pos : py);
+        r.value(ChangeKind::vendor_id_changed, "Vendor/Id", "vendor Id", hex(x.id, 8), hex(y.id, 8),
+                x.id_pos.known() ? x.id_pos : px, y.id_pos.known() ? y.id_pos : py);
     compare_texts(r, ChangeKind::name_changed, "Vendor", "Name", x.names, y.names, px, py);
     compare_texts(r, ChangeKind::comment_changed, "Vendor", "Comment", x.comments, y.comments, px, py);
     compare_texts(r, ChangeKind::comment_changed, "Vendor", "URL", x.urls, y.urls, px, py);
@@ -49,15 +49,18 @@ void compare_groups(Recorder& r, const std::vector<const Group*>& a, const std::
             const std::string p = indexed("Group", n > 1 ? fmt::format("{}#{}", type, i + 1) : type);
             if (!x || !y) {
                 const Group& g = x ? *x : *y;
-                r.add(x ? ChangeKind::group_removed : ChangeKind::group_added, p, x ? std::optional<std::string>(type) : std::nullopt,
-                      y ? std::optional<std::string>(type) : std::nullopt, x ? x->pos : old_parent, y ? y->pos : new_parent,
+                r.add(x ? ChangeKind::group_removed : ChangeKind::group_added, p,
+                      x ? std::optional<std::string>(type) : std::nullopt, y ? std::optional<std::string>(type) : std::nullopt,
+                      x ? x->pos : old_parent, y ? y->pos : new_parent,
                       fmt::format("group {} {} {}", quote(type), quote(primary_text(g.names)), x ? "removed" : "added"));
                 continue;
             }
             compare_texts(r, ChangeKind::name_changed, p, "Name", x->names, y->names, x->pos, y->pos);
             compare_texts(r, ChangeKind::comment_changed, p, "Comment", x->comments, y->comments, x->pos, y->pos);
-            r.value(ChangeKind::group_changed, attr(p, "SortOrder"), "SortOrder", dec(x->sort_order), dec(y->sort_order), x->pos, y->pos);
-            r.value(ChangeKind::group_changed, attr(p, "ParentGroup"), "ParentGroup", x->parent_group, y->parent_group, x->pos, y->pos);
+            r.value(ChangeKind::group_changed, attr(p, "SortOrder"), "SortOrder", dec(x->sort_order), dec(y->sort_order), x->pos,
+                    y->pos);
+            r.value(ChangeKind::group_changed, attr(p, "ParentGroup"), "ParentGroup", x->parent_group, y->parent_group, x->pos,
+                    y->pos);
             compare_images(r, p, x->images, y->images, x->pos, y->pos);
             compare_extras(r, p, x->extras, y->extras, x->pos, y->pos);
         }
@@ -70,9 +73,9 @@ std::string module_key(const Module& m) { return m.module_ident != 0 ? hex(m.mod
 
 void compare_module(Recorder& r, const std::string& p, const Module& a, const Module& b) {
     r.value(ChangeKind::type_text_changed, child(p, "Type"), "module Type text", a.type, b.type, a.type_pos, b.type_pos);
-    r.value(ChangeKind::module_attribute_changed, attr(child(p, "Type"), "ModuleClass"), "ModuleClass", a.module_class, b.module_class,
+    r.value(ChangeKind::module_attribute_changed, child(p, "Type@ModuleClass"), "ModuleClass", a.module_class, b.module_class,
             a.type_pos, b.type_pos);
-    r.value(ChangeKind::module_attribute_changed, attr(child(p, "Type"), "ModulePdoGroup"), "ModulePdoGroup", dec(a.module_pdo_group),
+    r.value(ChangeKind::module_attribute_changed, child(p, "Type@ModulePdoGroup"), "ModulePdoGroup", dec(a.module_pdo_group),
             dec(b.module_pdo_group), a.type_pos, b.type_pos);
     compare_extras(r, child(p, "Type"), a.type_extras, b.type_extras, a.type_pos, b.type_pos);
     compare_texts(r, ChangeKind::name_changed, p, "Name", a.names, b.names, a.pos, b.pos);
@@ -84,8 +87,8 @@ void compare_module(Recorder& r, const std::string& p, const Module& a, const Mo
     if (a.profile) pa.push_back(&*a.profile);
     if (b.profile) pb.push_back(&*b.profile);
     compare_profiles(r, p, pa, pb, a.pos, b.pos);
-    r.value(ChangeKind::module_attribute_changed, child(p, "DcOpModeName"), "DcOpModeName", a.dc_op_mode_name, b.dc_op_mode_name, a.pos,
-            b.pos);
+    r.value(ChangeKind::module_attribute_changed, child(p, "DcOpModeName"), "DcOpModeName", a.dc_op_mode_name, b.dc_op_mode_name,
+            a.pos, b.pos);
     compare_images(r, p, a.images, b.images, a.pos, b.pos);
     compare_extras(r, p, a.extras, b.extras, a.pos, b.pos);
 }
@@ -103,8 +106,8 @@ bool BrokenModules::affect(const Device& device) const {
     return false;
 }
 
-BrokenModules compare_modules(Recorder& r, const std::string& path, const std::vector<const Module*>& a, const std::vector<const Module*>& b,
-                              SourcePos old_parent, SourcePos new_parent) {
+BrokenModules compare_modules(Recorder& r, const std::string& path, const std::vector<const Module*>& a,
+                              const std::vector<const Module*>& b, SourcePos old_parent, SourcePos new_parent) {
     BrokenModules broken;
     auto note = [&](const Module& m) {
         if (m.module_ident != 0) broken.idents.insert(m.module_ident);
@@ -137,8 +140,9 @@ BrokenModules compare_modules(Recorder& r, const std::string& path, const std::v
             const Module& m = x ? *x : *y;
             if (x) note(*x);
             const std::string value = fmt::format("{} {}", m.type, quote(primary_text(m.names)));
-            r.add(x ? ChangeKind::module_removed : ChangeKind::module_added, p, x ? std::optional<std::string>(value) : std::nullopt,
-                  y ? std::optional<std::string>(value) : std::nullopt, x ? x->pos : old_parent, y ? y->pos : new_parent,
+            r.add(x ? ChangeKind::module_removed : ChangeKind::module_added, p,
+                  x ? std::optional<std::string>(value) : std::nullopt, y ? std::optional<std::string>(value) : std::nullopt,
+                  x ? x->pos : old_parent, y ? y->pos : new_parent,
                   fmt::format("module {} ({}) {}", key, value, x ? "removed" : "added"));
         }
     }

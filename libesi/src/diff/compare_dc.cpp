@@ -30,12 +30,15 @@ void compare_op_mode(Recorder& r, const std::string& p, const DcOpMode& a, const
         if (!m.has_assign_activate) return std::nullopt;
         return hex(m.assign_activate);
     };
-    r.value(ChangeKind::dc_assign_activate_changed, child(p, "AssignActivate"), fmt::format("AssignActivate of DC mode {}", quote(b.name)),
-            assign(a), assign(b), a.assign_activate_pos.known() ? a.assign_activate_pos : a.pos,
-            b.assign_activate_pos.known() ? b.assign_activate_pos : b.pos);
+    r.value(
+        ChangeKind::dc_assign_activate_changed, child(p, "AssignActivate"),
+        [&] { return fmt::format("AssignActivate of DC mode {}", quote(b.name)); }, assign(a), assign(b),
+        a.assign_activate_pos.known() ? a.assign_activate_pos : a.pos,
+        b.assign_activate_pos.known() ? b.assign_activate_pos : b.pos);
     const auto time = [&](std::string_view name, const std::optional<DcTime>& x, const std::optional<DcTime>& y) {
-        r.value(ChangeKind::dc_timing_changed, child(p, name), fmt::format("{} of DC mode {}", name, quote(b.name)), spell_time(x),
-                spell_time(y), pos_of(x, a.pos), pos_of(y, b.pos));
+        r.value(
+            ChangeKind::dc_timing_changed, child(p, name), [&] { return fmt::format("{} of DC mode {}", name, quote(b.name)); },
+            spell_time(x), spell_time(y), pos_of(x, a.pos), pos_of(y, b.pos));
     };
     time("CycleTimeSync0", a.cycle_time_sync0, b.cycle_time_sync0);
     time("ShiftTimeSync0", a.shift_time_sync0, b.shift_time_sync0);
@@ -46,8 +49,8 @@ void compare_op_mode(Recorder& r, const std::string& p, const DcOpMode& a, const
 
 }  // namespace
 
-void compare_dc(Recorder& r, const std::string& path, const std::optional<Dc>& a, const std::optional<Dc>& b, SourcePos old_parent,
-                SourcePos new_parent) {
+void compare_dc(Recorder& r, const std::string& path, const std::optional<Dc>& a, const std::optional<Dc>& b,
+                SourcePos old_parent, SourcePos new_parent) {
     if (!a && !b) return;
     static const Dc none;
     const Dc& x = a ? *a : none;
@@ -79,11 +82,12 @@ void compare_dc(Recorder& r, const std::string& path, const std::optional<Dc>& a
                 continue;
             }
             const DcOpMode& e = m ? *m : *o;
-            const std::string value = e.has_assign_activate ? fmt::format("AssignActivate {}", hex(e.assign_activate)) : std::string("-");
+            const std::string value =
+                e.has_assign_activate ? fmt::format("AssignActivate {}", hex(e.assign_activate)) : std::string("-");
             const std::string desc = e.desc ? " " + quote(*e.desc) : std::string();
-            r.add(m ? ChangeKind::dc_op_mode_removed : ChangeKind::dc_op_mode_added, p, m ? std::optional<std::string>(value) : std::nullopt,
-                  o ? std::optional<std::string>(value) : std::nullopt, m ? m->pos : px, o ? o->pos : py,
-                  fmt::format("DC mode {}{} {}", quote(name), desc, m ? "removed" : "added"));
+            r.add(m ? ChangeKind::dc_op_mode_removed : ChangeKind::dc_op_mode_added, p,
+                  m ? std::optional<std::string>(value) : std::nullopt, o ? std::optional<std::string>(value) : std::nullopt,
+                  m ? m->pos : px, o ? o->pos : py, fmt::format("DC mode {}{} {}", quote(name), desc, m ? "removed" : "added"));
         }
     }
     const auto attribute = [&](std::string_view name, const std::optional<bool>& p, const std::optional<bool>& q) {

@@ -20,8 +20,8 @@ std::vector<const Profile*> profiles_of(const Device& d) {
 void compare_device(Recorder& r, const Device& a, const Device& b) {
     // Identity: ProductCode and RevisionNo were matched by the caller.
     r.value(ChangeKind::type_text_changed, "Type", "Type text", a.type.text, b.type.text, a.type.pos, b.type.pos);
-    r.value(ChangeKind::device_flag_changed, attr("Type", "SerialNo"), "SerialNo", hex(a.type.serial_no, 8), hex(b.type.serial_no, 8),
-            a.type.pos, b.type.pos);
+    r.value(ChangeKind::device_flag_changed, attr("Type", "SerialNo"), "SerialNo", hex(a.type.serial_no, 8),
+            hex(b.type.serial_no, 8), a.type.pos, b.type.pos);
     r.value(ChangeKind::device_flag_changed, attr("Type", "TcCfgModeSafeOp"), "TcCfgModeSafeOp", flag(a.type.tc_cfg_mode_safe_op),
             flag(b.type.tc_cfg_mode_safe_op), a.type.pos, b.type.pos);
     compare_extras(r, "Type", a.type.extras, b.type.extras, a.type.pos, b.type.pos);
@@ -30,8 +30,10 @@ void compare_device(Recorder& r, const Device& a, const Device& b) {
     const std::string_view ports_a = std::string_view(a.physics).substr(0, a.physics.find_last_not_of(' ') + 1);
     const std::string_view ports_b = std::string_view(b.physics).substr(0, b.physics.find_last_not_of(' ') + 1);
     ChangeKind physics = ChangeKind::physics_changed;
-    if (ports_a == ports_b) physics = ChangeKind::spelling_changed;
-    else if (ports_b.size() > ports_a.size() && ports_b.substr(0, ports_a.size()) == ports_a) physics = ChangeKind::physics_ports_added;
+    if (ports_a == ports_b)
+        physics = ChangeKind::spelling_changed;
+    else if (ports_b.size() > ports_a.size() && ports_b.substr(0, ports_a.size()) == ports_a)
+        physics = ChangeKind::physics_ports_added;
     r.value(physics, "@Physics", "Physics", quote(a.physics), quote(b.physics), a.pos, b.pos);
     r.value(ChangeKind::device_flag_changed, "@Invisible", "Invisible", flag(a.invisible), flag(b.invisible), a.pos, b.pos);
     compare_texts(r, ChangeKind::name_changed, "", "Name", a.names, b.names, a.pos, b.pos);
@@ -52,8 +54,8 @@ void compare_device(Recorder& r, const Device& a, const Device& b) {
     compare_extras(r, "", a.extras, b.extras, a.pos, b.pos);
 }
 
-void compare_profiles(Recorder& r, const std::string& path, const std::vector<const Profile*>& a, const std::vector<const Profile*>& b,
-                      SourcePos old_parent, SourcePos new_parent) {
+void compare_profiles(Recorder& r, const std::string& path, const std::vector<const Profile*>& a,
+                      const std::vector<const Profile*>& b, SourcePos old_parent, SourcePos new_parent) {
     // Profiles pair up by position; a device has one in all but a few multi-channel files.
     const std::size_t n = std::max(a.size(), b.size());
     for (std::size_t i = 0; i < n; ++i) {
@@ -64,13 +66,15 @@ void compare_profiles(Recorder& r, const std::string& path, const std::vector<co
         const SourcePos py = y ? y->pos : new_parent;
         if (!x || !y) {
             r.add(ChangeKind::profile_changed, p, x ? std::optional<std::string>("Profile") : std::nullopt,
-                  y ? std::optional<std::string>("Profile") : std::nullopt, px, py, fmt::format("{} {}", p, x ? "removed" : "added"));
+                  y ? std::optional<std::string>("Profile") : std::nullopt, px, py,
+                  fmt::format("{} {}", p, x ? "removed" : "added"));
         } else {
-            r.value(ChangeKind::profile_number_changed, child(p, "ProfileNo"), "ProfileNo", dec(x->profile_no), dec(y->profile_no), px, py);
+            r.value(ChangeKind::profile_number_changed, child(p, "ProfileNo"), "ProfileNo", dec(x->profile_no),
+                    dec(y->profile_no), px, py);
             r.value(ChangeKind::profile_changed, child(p, "AddInfo"), "AddInfo", dec(x->add_info), dec(y->add_info), px, py);
             r.value(ChangeKind::profile_changed, attr(p, "Channel"), "Channel", dec(x->channel), dec(y->channel), px, py);
-            r.value(ChangeKind::profile_changed, child(p, "DictionaryFile"), "DictionaryFile", x->dictionary_file, y->dictionary_file,
-                    px, py);
+            r.value(ChangeKind::profile_changed, child(p, "DictionaryFile"), "DictionaryFile", x->dictionary_file,
+                    y->dictionary_file, px, py);
             compare_extras(r, p, x->extras, y->extras, px, py);
         }
         // The dictionary path leaves out "Profile" for the usual single profile: "Dictionary/Object[#x6040]".

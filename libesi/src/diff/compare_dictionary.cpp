@@ -59,8 +59,8 @@ std::optional<Number> number_of(const std::vector<std::uint8_t>& bytes, bool is_
     return Number::from_unsigned(v);
 }
 
-EntryValue value_of(const std::optional<Number>& number, const std::optional<HexData>& data, const std::optional<std::string>& string,
-                    std::uint64_t bit_size, const BasicType* basic, bool as_hex) {
+EntryValue value_of(const std::optional<Number>& number, const std::optional<HexData>& data,
+                    const std::optional<std::string>& string, std::uint64_t bit_size, const BasicType* basic, bool as_hex) {
     EntryValue v;
     const bool is_signed = basic && basic->is_signed();
     if (number) {
@@ -126,10 +126,14 @@ unsigned states_of(const std::optional<std::string>& restriction, bool& understo
     while (start <= s.size()) {
         const std::size_t end = std::min(s.find('_', start), s.size());
         const std::string token = s.substr(start, end - start);
-        if (token == "preop") states |= 1;
-        else if (token == "safeop") states |= 2;
-        else if (token == "op") states |= 4;
-        else understood = false;
+        if (token == "preop")
+            states |= 1;
+        else if (token == "safeop")
+            states |= 2;
+        else if (token == "op")
+            states |= 4;
+        else
+            understood = false;
         start = end + 1;
     }
     return states;
@@ -151,7 +155,8 @@ std::set<char> mapping_letters(const std::optional<std::string>& mapping) {
     std::set<char> out;
     if (!mapping) return out;
     for (char c : *mapping)
-        if (!std::isspace(static_cast<unsigned char>(c))) out.insert(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+        if (!std::isspace(static_cast<unsigned char>(c)))
+            out.insert(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
     return out;
 }
 
@@ -161,10 +166,21 @@ void compare_mapping(Recorder& r, const std::string& path, std::string_view what
     const std::set<char> lb = mapping_letters(b);
     if (la == lb) return;  // "RT" and "TR" are the same set
     const bool lost = !std::includes(lb.begin(), lb.end(), la.begin(), la.end());
-    r.value(lost ? ChangeKind::object_pdo_mapping_removed : ChangeKind::object_pdo_mapping_added, path, what, text(a), text(b), pa, pb);
+    r.value(lost ? ChangeKind::object_pdo_mapping_removed : ChangeKind::object_pdo_mapping_added, path, what, text(a), text(b),
+            pa, pb);
+}
+
+bool same_flags(const ObjectFlags* a, const ObjectFlags* b) {
+    if (!a || !b) return a == b;
+    return a->access == b->access && a->access_read_restrictions == b->access_read_restrictions &&
+           a->access_write_restrictions == b->access_write_restrictions && a->category == b->category &&
+           a->pdo_mapping == b->pdo_mapping && a->safety_mapping == b->safety_mapping && a->attribute == b->attribute &&
+           a->transition == b->transition && a->sdo_access == b->sdo_access && a->backup == b->backup &&
+           a->setting == b->setting && a->extras.empty() && b->extras.empty();
 }
 
 void compare_flags(Recorder& r, const std::string& p, const ObjectFlags* a, const ObjectFlags* b, SourcePos pa, SourcePos pb) {
+    if (same_flags(a, b)) return;
     if (a && a->pos.known()) pa = a->pos;
     if (b && b->pos.known()) pb = b->pos;
     const Permissions xa = permissions_of(a);
@@ -182,12 +198,14 @@ void compare_flags(Recorder& r, const std::string& p, const ObjectFlags* a, cons
         if (xa.understood && xb.understood) {
             const bool lost = (xa.read & ~xb.read) != 0 || (xa.write & ~xb.write) != 0;
             const bool gained = (xb.read & ~xa.read) != 0 || (xb.write & ~xa.write) != 0;
-            kind = lost ? ChangeKind::object_access_narrowed : gained ? ChangeKind::object_access_widened : ChangeKind::spelling_changed;
+            kind = lost     ? ChangeKind::object_access_narrowed
+                   : gained ? ChangeKind::object_access_widened
+                            : ChangeKind::spelling_changed;
         }
         r.value(kind, child(p, "Access"), "Access", ta, tb, pa, pb);
     }
-    compare_mapping(r, child(p, "PdoMapping"), "PdoMapping", a ? a->pdo_mapping : std::nullopt, b ? b->pdo_mapping : std::nullopt, pa,
-                    pb);
+    compare_mapping(r, child(p, "PdoMapping"), "PdoMapping", a ? a->pdo_mapping : std::nullopt, b ? b->pdo_mapping : std::nullopt,
+                    pa, pb);
     compare_mapping(r, child(p, "SafetyMapping"), "SafetyMapping", a ? a->safety_mapping : std::nullopt,
                     b ? b->safety_mapping : std::nullopt, pa, pb);
     const auto other = [&](std::string_view name, std::optional<std::string> x, std::optional<std::string> y) {
@@ -217,8 +235,8 @@ std::optional<Number> type_bound(const ObjectEntry& e, bool is_min) {
     return is_min ? Number{half, true} : Number::from_unsigned(half - 1);
 }
 
-void compare_limit(Recorder& r, const std::string& path, std::string_view what, bool is_min, const EntryValue& a, const EntryValue& b,
-                   const ObjectEntry& ea, const ObjectEntry& eb, SourcePos pa, SourcePos pb) {
+void compare_limit(Recorder& r, const std::string& path, std::string_view what, bool is_min, const EntryValue& a,
+                   const EntryValue& b, const ObjectEntry& ea, const ObjectEntry& eb, SourcePos pa, SourcePos pb) {
     if (same_value(a, b)) return;
     // An absent bound is the type's own bound: declaring MinValue 0 for an unsigned entry narrows nothing.
     const std::optional<Number> old_bound = a.present ? a.number : type_bound(ea, is_min);
@@ -237,8 +255,8 @@ void compare_limit(Recorder& r, const std::string& path, std::string_view what, 
             b.present ? std::optional<std::string>(b.display) : std::nullopt, pa, pb);
 }
 
-void compare_info_values(Recorder& r, const std::string& p, std::uint32_t object_index, const ObjectEntry& ea, const ObjectEntry& eb,
-                         SourcePos pa, SourcePos pb) {
+void compare_info_values(Recorder& r, const std::string& p, std::uint32_t object_index, const ObjectEntry& ea,
+                         const ObjectEntry& eb, SourcePos pa, SourcePos pb) {
     const ObjectInfo* ia = ea.info;
     const ObjectInfo* ib = eb.info;
     if (ia && ia->pos.known()) pa = ia->pos;
@@ -251,15 +269,19 @@ void compare_info_values(Recorder& r, const std::string& p, std::uint32_t object
         if (!info) return EntryValue{};
         return value_of(info->*member_number, info->*member_data, string ? *string : std::nullopt, e.bit_size, e.basic, as_hex);
     };
-    const EntryValue da = get(ia, &ObjectInfo::default_value, &ObjectInfo::default_data, ia ? &ia->default_string : nullptr, ea, as_hex_a);
-    const EntryValue db = get(ib, &ObjectInfo::default_value, &ObjectInfo::default_data, ib ? &ib->default_string : nullptr, eb, as_hex_b);
+    const EntryValue da =
+        get(ia, &ObjectInfo::default_value, &ObjectInfo::default_data, ia ? &ia->default_string : nullptr, ea, as_hex_a);
+    const EntryValue db =
+        get(ib, &ObjectInfo::default_value, &ObjectInfo::default_data, ib ? &ib->default_string : nullptr, eb, as_hex_b);
     if (!same_value(da, db))
-        r.value(mapping ? ChangeKind::pdo_mapping_default_changed : ChangeKind::object_default_changed, child(p, "Default"), "default",
-                da.present ? std::optional<std::string>(da.display) : std::nullopt,
+        r.value(mapping ? ChangeKind::pdo_mapping_default_changed : ChangeKind::object_default_changed, child(p, "Default"),
+                "default", da.present ? std::optional<std::string>(da.display) : std::nullopt,
                 db.present ? std::optional<std::string>(db.display) : std::nullopt, pa, pb);
-    compare_limit(r, child(p, "Min"), "minimum", true, get(ia, &ObjectInfo::min_value, &ObjectInfo::min_data, nullptr, ea, as_hex_a),
+    compare_limit(r, child(p, "Min"), "minimum", true,
+                  get(ia, &ObjectInfo::min_value, &ObjectInfo::min_data, nullptr, ea, as_hex_a),
                   get(ib, &ObjectInfo::min_value, &ObjectInfo::min_data, nullptr, eb, as_hex_b), ea, eb, pa, pb);
-    compare_limit(r, child(p, "Max"), "maximum", false, get(ia, &ObjectInfo::max_value, &ObjectInfo::max_data, nullptr, ea, as_hex_a),
+    compare_limit(r, child(p, "Max"), "maximum", false,
+                  get(ia, &ObjectInfo::max_value, &ObjectInfo::max_data, nullptr, ea, as_hex_a),
                   get(ib, &ObjectInfo::max_value, &ObjectInfo::max_data, nullptr, eb, as_hex_b), ea, eb, pa, pb);
 }
 
@@ -269,8 +291,8 @@ void compare_info_text(Recorder& r, const std::string& p, const ObjectInfo* a, c
     if (b && b->pos.known()) pb = b->pos;
     r.value(ChangeKind::comment_changed, child(p, "DisplayName"), "DisplayName", a ? a->display_name : std::nullopt,
             b ? b->display_name : std::nullopt, pa, pb);
-    r.value(ChangeKind::comment_changed, child(p, "Unit"), "Unit", a ? hex(a->unit, 8) : std::nullopt, b ? hex(b->unit, 8) : std::nullopt,
-            pa, pb);
+    r.value(ChangeKind::comment_changed, child(p, "Unit"), "Unit", a ? hex(a->unit, 8) : std::nullopt,
+            b ? hex(b->unit, 8) : std::nullopt, pa, pb);
     static const Extras none;
     compare_extras(r, child(p, "Info"), a ? a->extras : none, b ? b->extras : none, pa, pb);
 }
@@ -284,22 +306,26 @@ std::string describe_object(const Object& o) {
     return name.empty() ? fmt::format("object {}", hex(o.index)) : fmt::format("object {} {}", hex(o.index), quote(name));
 }
 
-void compare_object(Recorder& r, const std::string& path, const Dictionary* da, const Object& a, const Dictionary* db, const Object& b) {
+void compare_object(Recorder& r, const std::string& path, const Dictionary* da, const Object& a, const Dictionary* db,
+                    const Object& b) {
     const std::string p = object_path(path, a.index);
     compare_texts(r, ChangeKind::name_changed, p, "Name", a.names, b.names, a.pos, b.pos);
     compare_texts(r, ChangeKind::comment_changed, p, "Comment", a.comments, b.comments, a.pos, b.pos);
 
     const ObjectLayout la = layout_of(da, a);
     const ObjectLayout lb = layout_of(db, b);
-    r.value(ChangeKind::object_code_changed, child(p, "ObjectCode"), fmt::format("object code of {}", describe_object(b)),
-            std::string(to_string(la.code)), std::string(to_string(lb.code)), a.type_pos.known() ? a.type_pos : a.pos,
-            b.type_pos.known() ? b.type_pos : b.pos);
-    r.value(ChangeKind::object_size_changed, child(p, "BitSize"), fmt::format("BitSize of {}", describe_object(b)),
-            std::to_string(a.bit_size), std::to_string(b.bit_size), a.bit_size_pos.known() ? a.bit_size_pos : a.pos,
-            b.bit_size_pos.known() ? b.bit_size_pos : b.pos);
+    r.value(
+        ChangeKind::object_code_changed, child(p, "ObjectCode"),
+        [&] { return fmt::format("object code of {}", describe_object(b)); }, std::string(to_string(la.code)),
+        std::string(to_string(lb.code)), a.type_pos.known() ? a.type_pos : a.pos, b.type_pos.known() ? b.type_pos : b.pos);
+    r.value(
+        ChangeKind::object_size_changed, child(p, "BitSize"), [&] { return fmt::format("BitSize of {}", describe_object(b)); },
+        std::to_string(a.bit_size), std::to_string(b.bit_size), a.bit_size_pos.known() ? a.bit_size_pos : a.pos,
+        b.bit_size_pos.known() ? b.bit_size_pos : b.pos);
     const bool both_var = la.code == ObjectCode::var && lb.code == ObjectCode::var;
     if (!both_var && compare_types(da, a.type, db, b.type) == TypeMatch::spelling)
-        r.value(ChangeKind::spelling_changed, child(p, "Type"), "type name (same layout)", a.type, b.type, a.type_pos, b.type_pos);
+        r.value(ChangeKind::spelling_changed, child(p, "Type"), "type name (same layout)", a.type, b.type, a.type_pos,
+                b.type_pos);
 
     const ObjectFlags* fa = a.flags ? &*a.flags : nullptr;
     const ObjectFlags* fb = b.flags ? &*b.flags : nullptr;
@@ -312,34 +338,45 @@ void compare_object(Recorder& r, const std::string& path, const Dictionary* da, 
     for (std::uint32_t s : subindices) {
         const ObjectEntry* ea = la.entry(s);
         const ObjectEntry* eb = lb.entry(s);
-        const std::string ep = both_var ? p : child(path, indexed("Object", entry_key(a.index, s)));
+        const std::string ep = both_var ? p : child(path, indexed("Object", entry_key(a.index, s))).str();
         const SourcePos pa = ea && ea->type_item ? ea->type_item->pos : a.pos;
         const SourcePos pb = eb && eb->type_item ? eb->type_item->pos : b.pos;
         if (!ea || !eb) {
             const ObjectEntry& e = ea ? *ea : *eb;
             const std::string value = fmt::format("{} {}", e.name, e.type);
             r.add(ea ? ChangeKind::object_entry_removed : ChangeKind::object_entry_added, ep,
-                  ea ? std::optional<std::string>(value) : std::nullopt, eb ? std::optional<std::string>(value) : std::nullopt, pa, pb,
+                  ea ? std::optional<std::string>(value) : std::nullopt, eb ? std::optional<std::string>(value) : std::nullopt,
+                  pa, pb,
                   fmt::format("sub-index {} {} of {} {}", s, quote(e.name), describe_object(b), ea ? "removed" : "added"));
             continue;
         }
-        const std::string label = both_var ? describe_object(b) : fmt::format("sub-index {} {}", s, quote(eb->name));
-        if (!both_var) r.value(ChangeKind::name_changed, child(ep, "Name"), fmt::format("name of sub-index {}", s), ea->name, eb->name, pa, pb);
+        const auto label = [&] { return both_var ? describe_object(b) : fmt::format("sub-index {} {}", s, quote(eb->name)); };
+        if (!both_var)
+            r.value(
+                ChangeKind::name_changed, child(ep, "Name"), [&] { return fmt::format("name of sub-index {}", s); }, ea->name,
+                eb->name, pa, pb);
         switch (compare_types(da, ea->type, db, eb->type)) {
             case TypeMatch::same: break;
             case TypeMatch::spelling:
-                r.value(ChangeKind::spelling_changed, child(ep, "Type"), fmt::format("type of {}", label), ea->type, eb->type, pa, pb);
+                r.value(
+                    ChangeKind::spelling_changed, child(ep, "Type"), [&] { return fmt::format("type of {}", label()); }, ea->type,
+                    eb->type, pa, pb);
                 break;
             case TypeMatch::different:
-                r.value(ChangeKind::object_entry_type_changed, child(ep, "Type"), fmt::format("type of {}", label), ea->type, eb->type, pa,
-                        pb);
+                r.value(
+                    ChangeKind::object_entry_type_changed, child(ep, "Type"), [&] { return fmt::format("type of {}", label()); },
+                    ea->type, eb->type, pa, pb);
                 break;
         }
         if (!both_var) {
-            r.value(ChangeKind::object_entry_type_changed, child(ep, "BitSize"), fmt::format("BitSize of {}", label),
-                    std::to_string(ea->bit_size), std::to_string(eb->bit_size), pa, pb);
-            r.value(ChangeKind::object_entry_offset_changed, child(ep, "BitOffs"), fmt::format("BitOffs of {}", label),
-                    std::to_string(ea->bit_offset), std::to_string(eb->bit_offset), pa, pb);
+            r.value(
+                ChangeKind::object_entry_type_changed, child(ep, "BitSize"),
+                [&] { return fmt::format("BitSize of {}", label()); }, std::to_string(ea->bit_size), std::to_string(eb->bit_size),
+                pa, pb);
+            r.value(
+                ChangeKind::object_entry_offset_changed, child(ep, "BitOffs"),
+                [&] { return fmt::format("BitOffs of {}", label()); }, std::to_string(ea->bit_offset),
+                std::to_string(eb->bit_offset), pa, pb);
             // Flags of their own (from the DataType SubItem); flags inherited from the object were compared above.
             if (ea->flags != fa || eb->flags != fb) compare_flags(r, child(ep, "Flags"), ea->flags, eb->flags, pa, pb);
             if (ea->info != (a.info ? &*a.info : nullptr) || eb->info != (b.info ? &*b.info : nullptr))
@@ -367,8 +404,10 @@ bool same_extras(const Extras& a, const Extras& b) {
 
 // What differs between two DataTypes of the same name: semantic differences (layout, bounds,
 // enum values) and textual ones (comments, display names, enum texts).
-void data_type_differences(const DataType& a, const DataType& b, std::vector<std::string>& semantic, std::vector<std::string>& textual) {
-    auto diff = [](std::vector<std::string>& out, std::string what, const std::optional<std::string>& x, const std::optional<std::string>& y) {
+void data_type_differences(const DataType& a, const DataType& b, std::vector<std::string>& semantic,
+                           std::vector<std::string>& textual) {
+    auto diff = [](std::vector<std::string>& out, std::string what, const std::optional<std::string>& x,
+                   const std::optional<std::string>& y) {
         if (x != y) out.push_back(fmt::format("{} {} -> {}", what, x.value_or("(none)"), y.value_or("(none)")));
     };
     diff(semantic, "Index", hex(a.index), hex(b.index));
@@ -392,30 +431,40 @@ void data_type_differences(const DataType& a, const DataType& b, std::vector<std
         const std::string label = fmt::format("SubItem {}", i + 1);
         if (!x || !y) {
             const DataTypeSubItem& s = x ? *x : *y;
-            semantic.push_back(fmt::format("{} {} ({} {}) {}", label, quote(s.name), s.type, s.bit_size, x ? "removed" : "added"));
+            semantic.push_back(
+                fmt::format("{} {} ({} {}) {}", label, quote(s.name), s.type, s.bit_size, x ? "removed" : "added"));
             continue;
         }
         diff(semantic, label + " SubIdx", dec(x->subindex), dec(y->subindex));
         diff(textual, label + " Name", x->name, y->name);
         const TypeMatch tm = compare_type_names(x->type, y->type);
-        if (tm == TypeMatch::different) diff(semantic, label + " Type", x->type, y->type);
-        else if (tm == TypeMatch::spelling) diff(textual, label + " Type spelling", x->type, y->type);
+        if (tm == TypeMatch::different)
+            diff(semantic, label + " Type", x->type, y->type);
+        else if (tm == TypeMatch::spelling)
+            diff(textual, label + " Type spelling", x->type, y->type);
         diff(semantic, label + " BitSize", std::to_string(x->bit_size), std::to_string(y->bit_size));
         diff(semantic, label + " BitOffs", std::to_string(x->bit_offset), std::to_string(y->bit_offset));
         const EntryValue dx = value_of(x->default_value, x->default_data, x->default_string, x->bit_size, nullptr, false);
         const EntryValue dy = value_of(y->default_value, y->default_data, y->default_string, y->bit_size, nullptr, false);
-        if (!same_value(dx, dy)) semantic.push_back(label + " default " + (dx.present ? dx.display : "(none)") + " -> " + (dy.present ? dy.display : "(none)"));
+        if (!same_value(dx, dy))
+            semantic.push_back(label + " default " + (dx.present ? dx.display : "(none)") + " -> " +
+                               (dy.present ? dy.display : "(none)"));
         const EntryValue nx = value_of(x->min_value, std::nullopt, std::nullopt, x->bit_size, nullptr, false);
         const EntryValue ny = value_of(y->min_value, std::nullopt, std::nullopt, y->bit_size, nullptr, false);
-        if (!same_value(nx, ny)) semantic.push_back(label + " minimum " + (nx.present ? nx.display : "(none)") + " -> " + (ny.present ? ny.display : "(none)"));
+        if (!same_value(nx, ny))
+            semantic.push_back(label + " minimum " + (nx.present ? nx.display : "(none)") + " -> " +
+                               (ny.present ? ny.display : "(none)"));
         const EntryValue mx = value_of(x->max_value, std::nullopt, std::nullopt, x->bit_size, nullptr, false);
         const EntryValue my = value_of(y->max_value, std::nullopt, std::nullopt, y->bit_size, nullptr, false);
-        if (!same_value(mx, my)) semantic.push_back(label + " maximum " + (mx.present ? mx.display : "(none)") + " -> " + (my.present ? my.display : "(none)"));
+        if (!same_value(mx, my))
+            semantic.push_back(label + " maximum " + (mx.present ? mx.display : "(none)") + " -> " +
+                               (my.present ? my.display : "(none)"));
         {
             std::vector<Change> scratch;
             Recorder probe(scratch);
             compare_flags(probe, "", x->flags ? &*x->flags : nullptr, y->flags ? &*y->flags : nullptr, {}, {});
-            for (const auto& c : scratch) (c.change_class == ChangeClass::cosmetic ? textual : semantic).push_back(label + " " + c.message);
+            for (const auto& c : scratch)
+                (c.change_class == ChangeClass::cosmetic ? textual : semantic).push_back(label + " " + c.message);
         }
         if (names_text(x->display_names) != names_text(y->display_names)) textual.push_back(label + " DisplayName");
         if (names_text(x->comments) != names_text(y->comments)) textual.push_back(label + " Comment");
@@ -430,7 +479,8 @@ void data_type_differences(const DataType& a, const DataType& b, std::vector<std
             semantic.push_back(fmt::format("{} {} {}", label, format_decimal((x ? x : y)->value), x ? "removed" : "added"));
             continue;
         }
-        if (!(x->value == y->value)) semantic.push_back(fmt::format("{} value {} -> {}", label, format_decimal(x->value), format_decimal(y->value)));
+        if (!(x->value == y->value))
+            semantic.push_back(fmt::format("{} value {} -> {}", label, format_decimal(x->value), format_decimal(y->value)));
         if (names_text(x->texts) != names_text(y->texts)) textual.push_back(label + " Text");
         if (names_text(x->comments) != names_text(y->comments)) textual.push_back(label + " Comment");
     }
@@ -476,13 +526,14 @@ void compare_data_types(Recorder& r, const std::string& path, const Dictionary* 
                 continue;
             }
             if (canonical_type_name(x->name) != canonical_type_name(y->name))
-                r.value(ChangeKind::spelling_changed, child(p, "Name"), "DataType name", x->name, y->name, x->name_pos, y->name_pos);
+                r.value(ChangeKind::spelling_changed, child(p, "Name"), "DataType name", x->name, y->name, x->name_pos,
+                        y->name_pos);
             std::vector<std::string> semantic;
             std::vector<std::string> textual;
             data_type_differences(*x, *y, semantic, textual);
             if (!semantic.empty())
-                r.add(ChangeKind::data_type_changed, p, fmt::format("{} bits", x->bit_size), fmt::format("{} bits", y->bit_size), x->pos,
-                      y->pos, fmt::format("DataType {} changed: {}", y->name, summary(semantic)));
+                r.add(ChangeKind::data_type_changed, p, fmt::format("{} bits", x->bit_size), fmt::format("{} bits", y->bit_size),
+                      x->pos, y->pos, fmt::format("DataType {} changed: {}", y->name, summary(semantic)));
             if (!textual.empty())
                 r.add(ChangeKind::data_type_text_changed, p, std::nullopt, std::nullopt, x->pos, y->pos,
                       fmt::format("DataType {} texts changed: {}", y->name, summary(textual)));
@@ -521,7 +572,8 @@ void compare_dictionaries(Recorder& r, const std::string& path, const Dictionary
             const std::string value = fmt::format("{} {}", o.type, o.bit_size);
             r.add(x ? ChangeKind::object_removed : ChangeKind::object_added, object_path(path, index),
                   x ? std::optional<std::string>(value) : std::nullopt, y ? std::optional<std::string>(value) : std::nullopt,
-                  x ? x->pos : old_parent, y ? y->pos : new_parent, fmt::format("{} {}", describe_object(o), x ? "removed" : "added"));
+                  x ? x->pos : old_parent, y ? y->pos : new_parent,
+                  fmt::format("{} {}", describe_object(o), x ? "removed" : "added"));
         }
     }
     static const Extras none;

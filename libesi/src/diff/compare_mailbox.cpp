@@ -23,7 +23,8 @@ std::string init_cmd_key(const InitCmd& c, Protocol protocol) {
     switch (protocol) {
         case Protocol::coe: return entry_key(c.index.value_or(0), c.subindex.value_or(0));
         case Protocol::soe:
-            return c.channel ? fmt::format("IDN {} Chn {}", c.idn.value_or(0), *c.channel) : fmt::format("IDN {}", c.idn.value_or(0));
+            return c.channel ? fmt::format("IDN {} Chn {}", c.idn.value_or(0), *c.channel)
+                             : fmt::format("IDN {}", c.idn.value_or(0));
         case Protocol::eoe: return fmt::format("Type {}", c.type.value_or(0));
         case Protocol::aoe: return "AoE";
     }
@@ -73,12 +74,14 @@ void compare_init_cmds(Recorder& r, const std::string& path, Protocol protocol, 
     std::vector<std::string> kb;
     for (const auto& c : a) ka.push_back(init_cmd_key(c, protocol));
     for (const auto& c : b) kb.push_back(init_cmd_key(c, protocol));
-    const Alignment alignment = align(ka, kb, [&](const std::string&) { return protocol != Protocol::aoe; }, true);
+    const Alignment alignment = align(
+        ka, kb, [&](const std::string&) { return protocol != Protocol::aoe; }, true);
 
     // "InitCmd[#x1C12:00]", the second command with that key "InitCmd[#x1C12:00#2]"; AoE by position.
-    auto path_of = [&](const std::vector<std::string>& keys, std::size_t i) {
+    auto path_of = [&](const std::vector<std::string>& keys, std::size_t i) -> std::string {
         if (protocol == Protocol::aoe) return child(path, indexed("InitCmd", std::to_string(i + 1)));
-        const std::size_t occurrence = static_cast<std::size_t>(std::count(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(i), keys[i]));
+        const std::size_t occurrence =
+            static_cast<std::size_t>(std::count(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(i), keys[i]));
         return child(path, indexed("InitCmd", occurrence ? fmt::format("{}#{}", keys[i], occurrence + 1) : keys[i]));
     };
 
@@ -95,7 +98,8 @@ void compare_init_cmds(Recorder& r, const std::string& path, Protocol protocol, 
                               pair.new_index + 1));
         else if (pair.how == Alignment::Pair::How::replaced)
             r.add(ChangeKind::init_cmd_changed, p, describe_init_cmd(x, protocol), describe_init_cmd(y, protocol), x.pos, y.pos,
-                  fmt::format("InitCmd {} now addresses {} instead of {}", pair.new_index + 1, kb[pair.new_index], ka[pair.old_index]));
+                  fmt::format("InitCmd {} now addresses {} instead of {}", pair.new_index + 1, kb[pair.new_index],
+                              ka[pair.old_index]));
         compare_init_cmd(r, pair.how == Alignment::Pair::How::replaced ? path_of(kb, pair.new_index) : p, x, y);
     }
     for (std::size_t j : alignment.added)
@@ -107,12 +111,13 @@ void compare_init_cmds(Recorder& r, const std::string& path, Protocol protocol, 
 }
 
 // A capability flag: going from true to false is a lost capability.
-void capability(Recorder& r, const std::string& path, std::string_view name, const std::optional<bool>& a, const std::optional<bool>& b,
-                SourcePos pa, SourcePos pb) {
+void capability(Recorder& r, const std::string& path, std::string_view name, const std::optional<bool>& a,
+                const std::optional<bool>& b, SourcePos pa, SourcePos pb) {
     const bool x = a.value_or(false);
     const bool y = b.value_or(false);
     if (x == y) return;
-    r.value(y ? ChangeKind::mailbox_flag_set : ChangeKind::mailbox_flag_cleared, attr(path, name), name, flag(a), flag(b), pa, pb);
+    r.value(y ? ChangeKind::mailbox_flag_set : ChangeKind::mailbox_flag_cleared, attr(path, name), name, flag(a), flag(b), pa,
+            pb);
 }
 
 // Presence of a protocol element; returns whether both are present (and their contents should be compared).
@@ -120,8 +125,12 @@ template <class P>
 bool presence(Recorder& r, const std::string& p, std::string_view name, const std::optional<P>& a, const std::optional<P>& b,
               SourcePos pa, SourcePos pb) {
     if (a && b) return true;
-    if (a) r.add(ChangeKind::mailbox_protocol_removed, p, std::string(name), std::nullopt, a->pos, pb, fmt::format("mailbox protocol {} removed", name));
-    if (b) r.add(ChangeKind::mailbox_protocol_added, p, std::nullopt, std::string(name), pa, b->pos, fmt::format("mailbox protocol {} added", name));
+    if (a)
+        r.add(ChangeKind::mailbox_protocol_removed, p, std::string(name), std::nullopt, a->pos, pb,
+              fmt::format("mailbox protocol {} removed", name));
+    if (b)
+        r.add(ChangeKind::mailbox_protocol_added, p, std::nullopt, std::string(name), pa, b->pos,
+              fmt::format("mailbox protocol {} added", name));
     return false;
 }
 
@@ -133,11 +142,13 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (!a || !b) {
         const Mailbox& m = a ? *a : *b;
         std::string protocols;
-        for (const auto& [bit, name] : {std::pair{0x01, "AoE"}, {0x02, "EoE"}, {0x04, "CoE"}, {0x08, "FoE"}, {0x10, "SoE"}, {0x20, "VoE"}})
+        for (const auto& [bit, name] :
+             {std::pair{0x01, "AoE"}, {0x02, "EoE"}, {0x04, "CoE"}, {0x08, "FoE"}, {0x10, "SoE"}, {0x20, "VoE"}})
             if (m.protocol_bits() & bit) protocols += (protocols.empty() ? "" : " ") + std::string(name);
         if (protocols.empty()) protocols = "(no protocol)";
-        r.add(a ? ChangeKind::mailbox_removed : ChangeKind::mailbox_added, path, a ? std::optional<std::string>(protocols) : std::nullopt,
-              b ? std::optional<std::string>(protocols) : std::nullopt, a ? a->pos : old_parent, b ? b->pos : new_parent,
+        r.add(a ? ChangeKind::mailbox_removed : ChangeKind::mailbox_added, path,
+              a ? std::optional<std::string>(protocols) : std::nullopt, b ? std::optional<std::string>(protocols) : std::nullopt,
+              a ? a->pos : old_parent, b ? b->pos : new_parent,
               fmt::format("mailbox ({}) {}", protocols, a ? "removed" : "added"));
         // A mailbox that appears brings its InitCmds; a master configured without a mailbox never sent them.
         static const Mailbox empty;
@@ -162,8 +173,8 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
         capability(r, coe, "PdoConfig", c.pdo_config, d.pdo_config, c.pos, d.pos);
         // PdoUpload (SII General CoE details bit 4, "upload at startup") asks the master to read the
         // PDO configuration at start-up: an instruction, not a capability a configuration relies on.
-        r.value(ChangeKind::mailbox_attribute_changed, attr(coe, "PdoUpload"), "PdoUpload", flag(c.pdo_upload), flag(d.pdo_upload), c.pos,
-                d.pos);
+        r.value(ChangeKind::mailbox_attribute_changed, attr(coe, "PdoUpload"), "PdoUpload", flag(c.pdo_upload),
+                flag(d.pdo_upload), c.pos, d.pos);
         capability(r, coe, "CompleteAccess", c.complete_access, d.complete_access, c.pos, d.pos);
         capability(r, coe, "SegmentedSdo", c.segmented_sdo, d.segmented_sdo, c.pos, d.pos);
         capability(r, coe, "DiagHistory", c.diag_history, d.diag_history, c.pos, d.pos);
@@ -177,7 +188,8 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
         compare_extras(r, coe, c.extras, d.extras, c.pos, d.pos);
     } else if (x.coe || y.coe) {
         compare_init_cmds(r, coe, Protocol::coe, x.coe ? x.coe->init_cmds : std::vector<InitCmd>{},
-                          y.coe ? y.coe->init_cmds : std::vector<InitCmd>{}, x.coe ? x.coe->pos : x.pos, y.coe ? y.coe->pos : y.pos);
+                          y.coe ? y.coe->init_cmds : std::vector<InitCmd>{}, x.coe ? x.coe->pos : x.pos,
+                          y.coe ? y.coe->pos : y.pos);
     }
 
     const std::string eoe = child(path, "EoE");
@@ -195,8 +207,8 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (presence(r, soe, "SoE", x.soe, y.soe, x.pos, y.pos)) {
         const SoeProtocol& c = *x.soe;
         const SoeProtocol& d = *y.soe;
-        r.value(ChangeKind::mailbox_channels_changed, attr(soe, "ChannelCount"), "ChannelCount", dec(c.channel_count), dec(d.channel_count),
-                c.pos, d.pos);
+        r.value(ChangeKind::mailbox_channels_changed, attr(soe, "ChannelCount"), "ChannelCount", dec(c.channel_count),
+                dec(d.channel_count), c.pos, d.pos);
         capability(r, soe, "DriveFollowsBit3Support", c.drive_follows_bit3_support, d.drive_follows_bit3_support, c.pos, d.pos);
         compare_init_cmds(r, soe, Protocol::soe, c.init_cmds, d.init_cmds, c.pos, d.pos);
         compare_extras(r, soe, c.extras, d.extras, c.pos, d.pos);
@@ -214,9 +226,11 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     }
 
     const std::string foe = child(path, "FoE");
-    if (presence(r, foe, "FoE", x.foe, y.foe, x.pos, y.pos)) compare_extras(r, foe, x.foe->extras, y.foe->extras, x.foe->pos, y.foe->pos);
+    if (presence(r, foe, "FoE", x.foe, y.foe, x.pos, y.pos))
+        compare_extras(r, foe, x.foe->extras, y.foe->extras, x.foe->pos, y.foe->pos);
     const std::string voe = child(path, "VoE");
-    if (presence(r, voe, "VoE", x.voe, y.voe, x.pos, y.pos)) compare_extras(r, voe, x.voe->extras, y.voe->extras, x.voe->pos, y.voe->pos);
+    if (presence(r, voe, "VoE", x.voe, y.voe, x.pos, y.pos))
+        compare_extras(r, voe, x.voe->extras, y.voe->extras, x.voe->pos, y.voe->pos);
 
     compare_extras(r, path, x.extras, y.extras, x.pos, y.pos);
 }

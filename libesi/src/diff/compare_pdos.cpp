@@ -30,7 +30,8 @@ std::string entry_path(const std::string& pdo_path, const PdoEntry& e, std::size
 std::string describe_entry(const PdoEntry& e) {
     const std::string& name = primary_text(e.names);
     if (e.is_padding())
-        return name.empty() ? fmt::format("padding of {} bits", e.bit_len) : fmt::format("{} (index 0, {} bits)", quote(name), e.bit_len);
+        return name.empty() ? fmt::format("padding of {} bits", e.bit_len)
+                            : fmt::format("{} (index 0, {} bits)", quote(name), e.bit_len);
     return name.empty() ? entry_key(e.index, e.effective_subindex())
                         : fmt::format("{} {}", entry_key(e.index, e.effective_subindex()), quote(name));
 }
@@ -42,35 +43,40 @@ std::string entry_value(const PdoEntry& e) {
 }
 
 void compare_entry_fields(Recorder& r, const std::string& p, const PdoEntry& a, const PdoEntry& b) {
-    const std::string label = describe_entry(b);
-    r.value(ChangeKind::pdo_entry_bit_len_changed, child(p, "BitLen"), fmt::format("BitLen of entry {}", label), dec(a.bit_len),
-            dec(b.bit_len), a.bit_len_pos.known() ? a.bit_len_pos : a.pos, b.bit_len_pos.known() ? b.bit_len_pos : b.pos);
+    const auto label = [&] { return describe_entry(b); };
+    r.value(
+        ChangeKind::pdo_entry_bit_len_changed, child(p, "BitLen"), [&] { return fmt::format("BitLen of entry {}", label()); },
+        dec(a.bit_len), dec(b.bit_len), a.bit_len_pos.known() ? a.bit_len_pos : a.pos,
+        b.bit_len_pos.known() ? b.bit_len_pos : b.pos);
     const SourcePos ta = a.data_type_pos.known() ? a.data_type_pos : a.pos;
     const SourcePos tb = b.data_type_pos.known() ? b.data_type_pos : b.pos;
     if (a.data_type && b.data_type) {
         switch (compare_type_names(*a.data_type, *b.data_type)) {
             case TypeMatch::same: break;
             case TypeMatch::spelling:
-                r.value(ChangeKind::spelling_changed, child(p, "DataType"), fmt::format("DataType of entry {}", label), a.data_type,
-                        b.data_type, ta, tb);
+                r.value(
+                    ChangeKind::spelling_changed, child(p, "DataType"),
+                    [&] { return fmt::format("DataType of entry {}", label()); }, a.data_type, b.data_type, ta, tb);
                 break;
             case TypeMatch::different:
-                r.value(ChangeKind::pdo_entry_data_type_changed, child(p, "DataType"), fmt::format("DataType of entry {}", label),
-                        a.data_type, b.data_type, ta, tb);
+                r.value(
+                    ChangeKind::pdo_entry_data_type_changed, child(p, "DataType"),
+                    [&] { return fmt::format("DataType of entry {}", label()); }, a.data_type, b.data_type, ta, tb);
                 break;
         }
     } else {
-        r.value(ChangeKind::pdo_entry_data_type_declared, child(p, "DataType"), fmt::format("DataType of entry {}", label), a.data_type,
-                b.data_type, ta, tb);
+        r.value(
+            ChangeKind::pdo_entry_data_type_declared, child(p, "DataType"),
+            [&] { return fmt::format("DataType of entry {}", label()); }, a.data_type, b.data_type, ta, tb);
     }
-    r.value(ChangeKind::pdo_entry_attribute_changed, attr(child(p, "DataType"), "DScale"), "DScale", a.data_type_dscale,
+    r.value(ChangeKind::pdo_entry_attribute_changed, child(p, "DataType@DScale"), "DScale", a.data_type_dscale,
             b.data_type_dscale, ta, tb);
-    r.value(ChangeKind::pdo_entry_attribute_changed, attr(child(p, "DataType"), "SwapData"), "SwapData", flag(a.data_type_swap_data),
+    r.value(ChangeKind::pdo_entry_attribute_changed, child(p, "DataType@SwapData"), "SwapData", flag(a.data_type_swap_data),
             flag(b.data_type_swap_data), ta, tb);
     r.value(ChangeKind::pdo_entry_attribute_changed, attr(p, "Fixed"), "Fixed", flag(a.fixed), flag(b.fixed), a.pos, b.pos);
-    r.value(ChangeKind::pdo_entry_attribute_changed, attr(child(p, "Index"), "DependOnSlot"), "Index@DependOnSlot",
+    r.value(ChangeKind::pdo_entry_attribute_changed, child(p, "Index@DependOnSlot"), "Index@DependOnSlot",
             flag(a.index_depend_on_slot), flag(b.index_depend_on_slot), a.pos, b.pos);
-    r.value(ChangeKind::pdo_entry_attribute_changed, attr(child(p, "Index"), "DependOnSlotGroup"), "Index@DependOnSlotGroup",
+    r.value(ChangeKind::pdo_entry_attribute_changed, child(p, "Index@DependOnSlotGroup"), "Index@DependOnSlotGroup",
             flag(a.index_depend_on_slot_group), flag(b.index_depend_on_slot_group), a.pos, b.pos);
     compare_texts(r, ChangeKind::name_changed, p, "Name", a.names, b.names, a.pos, b.pos);
     r.value(ChangeKind::comment_changed, child(p, "Comment"), "Comment", a.comment, b.comment, a.pos, b.pos);
@@ -82,7 +88,8 @@ void compare_entries(Recorder& r, const std::string& pdo_path, const Pdo& a, con
     std::vector<EntryKey> kb;
     for (const auto& e : a.entries) ka.push_back(key_of(e));
     for (const auto& e : b.entries) kb.push_back(key_of(e));
-    const Alignment alignment = align(ka, kb, [](const EntryKey& k) { return k.first != 0; }, true);
+    const Alignment alignment = align(
+        ka, kb, [](const EntryKey& k) { return k.first != 0; }, true);
 
     // Report in the order of the new PDO so that output reads top to bottom.
     std::vector<Alignment::Pair> pairs = alignment.pairs;
@@ -92,9 +99,10 @@ void compare_entries(Recorder& r, const std::string& pdo_path, const Pdo& a, con
         const PdoEntry& y = b.entries[pair.new_index];
         const std::string p = entry_path(pdo_path, x, pair.old_index);
         if (pair.how == Alignment::Pair::How::moved) {
-            r.add(ChangeKind::pdo_entry_moved, p, fmt::format("position {}", pair.old_index + 1),
-                  fmt::format("position {}", pair.new_index + 1), x.pos, y.pos,
-                  fmt::format("entry {} moved from position {} to {}", describe_entry(y), pair.old_index + 1, pair.new_index + 1));
+            r.add(
+                ChangeKind::pdo_entry_moved, p, fmt::format("position {}", pair.old_index + 1),
+                fmt::format("position {}", pair.new_index + 1), x.pos, y.pos,
+                fmt::format("entry {} moved from position {} to {}", describe_entry(y), pair.old_index + 1, pair.new_index + 1));
         } else if (pair.how == Alignment::Pair::How::replaced) {
             r.add(ChangeKind::pdo_entry_index_changed, child(p, "Index"), entry_value(x), entry_value(y), x.pos, y.pos,
                   fmt::format("entry {} of {} now maps {} instead of {}", pair.new_index + 1, a.element_name(), describe_entry(y),
@@ -104,8 +112,8 @@ void compare_entries(Recorder& r, const std::string& pdo_path, const Pdo& a, con
     }
     for (std::size_t j : alignment.added) {
         const PdoEntry& y = b.entries[j];
-        r.add(ChangeKind::pdo_entry_added, entry_path(pdo_path, y, j), std::nullopt, entry_value(y), a.pos,
-              y.pos, fmt::format("entry {} added at position {}", describe_entry(y), j + 1));
+        r.add(ChangeKind::pdo_entry_added, entry_path(pdo_path, y, j), std::nullopt, entry_value(y), a.pos, y.pos,
+              fmt::format("entry {} added at position {}", describe_entry(y), j + 1));
     }
     for (std::size_t i : alignment.removed) {
         const PdoEntry& x = a.entries[i];
@@ -129,8 +137,8 @@ void compare_pdo(Recorder& r, const std::string& p, const Pdo& a, const Pdo& b) 
         r.value(b.fixed.value_or(false) ? ChangeKind::pdo_fixed_set : ChangeKind::pdo_fixed_cleared, attr(p, "Fixed"), "Fixed",
                 flag(a.fixed), flag(b.fixed), a.pos, b.pos);
     if (a.mandatory.value_or(false) != b.mandatory.value_or(false))
-        r.value(b.mandatory.value_or(false) ? ChangeKind::pdo_mandatory_set : ChangeKind::pdo_mandatory_cleared, attr(p, "Mandatory"),
-                "Mandatory", flag(a.mandatory), flag(b.mandatory), a.pos, b.pos);
+        r.value(b.mandatory.value_or(false) ? ChangeKind::pdo_mandatory_set : ChangeKind::pdo_mandatory_cleared,
+                attr(p, "Mandatory"), "Mandatory", flag(a.mandatory), flag(b.mandatory), a.pos, b.pos);
     const auto attribute = [&](std::string_view name, std::optional<std::string> x, std::optional<std::string> y) {
         r.value(ChangeKind::pdo_attribute_changed, attr(p, name), name, x, y, a.pos, b.pos);
     };
@@ -145,9 +153,9 @@ void compare_pdo(Recorder& r, const std::string& p, const Pdo& a, const Pdo& b) 
     attribute("SRA_Parameter", flag(a.sra_parameter), flag(b.sra_parameter));
     attribute("SafetyPdoType", a.safety_pdo_type, b.safety_pdo_type);
     attribute("SafetyConnNumber", dec(a.safety_conn_number), dec(b.safety_conn_number));
-    r.value(ChangeKind::pdo_attribute_changed, attr(child(p, "Index"), "DependOnSlot"), "Index@DependOnSlot",
-            flag(a.index_depend_on_slot), flag(b.index_depend_on_slot), a.index_pos, b.index_pos);
-    r.value(ChangeKind::pdo_attribute_changed, attr(child(p, "Index"), "DependOnSlotGroup"), "Index@DependOnSlotGroup",
+    r.value(ChangeKind::pdo_attribute_changed, child(p, "Index@DependOnSlot"), "Index@DependOnSlot", flag(a.index_depend_on_slot),
+            flag(b.index_depend_on_slot), a.index_pos, b.index_pos);
+    r.value(ChangeKind::pdo_attribute_changed, child(p, "Index@DependOnSlotGroup"), "Index@DependOnSlotGroup",
             flag(a.index_depend_on_slot_group), flag(b.index_depend_on_slot_group), a.index_pos, b.index_pos);
 
     // Excludes and ExcludedSm are sets: order carries no meaning.
@@ -169,12 +177,14 @@ void compare_pdo(Recorder& r, const std::string& p, const Pdo& a, const Pdo& b) 
     std::sort(sb.begin(), sb.end());
     for (std::uint32_t sm : sb)
         if (!std::binary_search(sa.begin(), sa.end(), sm))
-            r.add(ChangeKind::pdo_exclude_added, child(p, indexed("ExcludedSm", std::to_string(sm))), std::nullopt, std::to_string(sm),
-                  a.pos, b.pos, fmt::format("{} {} may no longer be assigned to SyncManager {}", a.element_name(), hex(b.index), sm));
+            r.add(ChangeKind::pdo_exclude_added, child(p, indexed("ExcludedSm", std::to_string(sm))), std::nullopt,
+                  std::to_string(sm), a.pos, b.pos,
+                  fmt::format("{} {} may no longer be assigned to SyncManager {}", a.element_name(), hex(b.index), sm));
     for (std::uint32_t sm : sa)
         if (!std::binary_search(sb.begin(), sb.end(), sm))
-            r.add(ChangeKind::pdo_exclude_removed, child(p, indexed("ExcludedSm", std::to_string(sm))), std::to_string(sm), std::nullopt,
-                  a.pos, b.pos, fmt::format("{} {} may now be assigned to SyncManager {}", a.element_name(), hex(a.index), sm));
+            r.add(ChangeKind::pdo_exclude_removed, child(p, indexed("ExcludedSm", std::to_string(sm))), std::to_string(sm),
+                  std::nullopt, a.pos, b.pos,
+                  fmt::format("{} {} may now be assigned to SyncManager {}", a.element_name(), hex(a.index), sm));
 
     compare_entries(r, p, a, b);
     compare_extras(r, p, a.extras, b.extras, a.pos, b.pos);
@@ -191,8 +201,8 @@ std::string describe_pdo(const Pdo& p) {
 
 }  // namespace
 
-void compare_pdos(Recorder& r, const std::string& path, const std::vector<Pdo>& a, const std::vector<Pdo>& b, SourcePos old_parent,
-                  SourcePos new_parent) {
+void compare_pdos(Recorder& r, const std::string& path, const std::vector<Pdo>& a, const std::vector<Pdo>& b,
+                  SourcePos old_parent, SourcePos new_parent) {
     // Pair by index; the k-th PDO with a given index pairs with the k-th in the other file.
     std::map<std::uint32_t, std::vector<std::size_t>> ia;
     std::map<std::uint32_t, std::vector<std::size_t>> ib;
@@ -205,8 +215,10 @@ void compare_pdos(Recorder& r, const std::string& path, const std::vector<Pdo>& 
         const auto it = ib.find(index);
         const std::size_t both = it == ib.end() ? 0 : std::min(list.size(), it->second.size());
         for (std::size_t k = 0; k < list.size(); ++k) {
-            if (k < both) pairs.emplace_back(list[k], it->second[k]);
-            else removed.push_back(list[k]);
+            if (k < both)
+                pairs.emplace_back(list[k], it->second[k]);
+            else
+                removed.push_back(list[k]);
         }
     }
     for (const auto& [index, list] : ib) {
@@ -215,7 +227,7 @@ void compare_pdos(Recorder& r, const std::string& path, const std::vector<Pdo>& 
         for (std::size_t k = both; k < list.size(); ++k) added.push_back(list[k]);
     }
 
-    auto pdo_path = [&](const Pdo& p, const std::vector<std::size_t>& same_index, std::size_t position) {
+    auto pdo_path = [&](const Pdo& p, const std::vector<std::size_t>& same_index, std::size_t position) -> std::string {
         std::string key = hex(p.index);
         if (same_index.size() > 1) key += fmt::format("#{}", position + 1);
         return child(path, indexed(p.element_name(), key));
@@ -231,8 +243,8 @@ void compare_pdos(Recorder& r, const std::string& path, const std::vector<Pdo>& 
     for (std::size_t j : added) {
         const Pdo& y = b[j];
         const auto& list = ib[y.index];
-        r.add(y.sm ? ChangeKind::pdo_added_assigned : ChangeKind::pdo_added, pdo_path(y, list, position_in(list, j)), std::nullopt,
-              describe_pdo(y), old_parent, y.pos,
+        r.add(y.sm ? ChangeKind::pdo_added_assigned : ChangeKind::pdo_added, pdo_path(y, list, position_in(list, j)),
+              std::nullopt, describe_pdo(y), old_parent, y.pos,
               y.sm ? fmt::format("{} added and assigned to SyncManager {} by default", describe_pdo(y), *y.sm)
                    : fmt::format("{} added", describe_pdo(y)));
     }
@@ -269,7 +281,8 @@ void compare_pdos(Recorder& r, const std::string& path, const std::vector<Pdo>& 
                 first = &p;
                 break;
             }
-        r.add(ChangeKind::sm_assignment_order_changed, child(path, indexed("Sm", std::to_string(sm))) + "/" +
+        r.add(ChangeKind::sm_assignment_order_changed,
+              child(path, indexed("Sm", std::to_string(sm))).str() + "/" +
                   (a.empty() ? "Pdo" : std::string(a.front().element_name())) + "Assignment",
               spell(list), spell(other), old_parent, first ? first->pos : new_parent,
               fmt::format("order of the PDOs assigned to SyncManager {} changed from {} to {}", sm, spell(list), spell(other)));

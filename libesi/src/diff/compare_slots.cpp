@@ -16,10 +16,12 @@ void bound(Recorder& r, const std::string& path, std::string_view name, const st
            const std::optional<std::uint32_t>& b, bool is_max, SourcePos pa, SourcePos pb) {
     if (a == b) return;
     bool narrowed = false;
-    if (is_max) narrowed = b && (!a || *b < *a);  // absent = unbounded
-    else narrowed = b.value_or(0) > a.value_or(0);
-    r.value(narrowed ? ChangeKind::slot_instances_narrowed : ChangeKind::slot_instances_widened, attr(path, name), name, dec(a), dec(b), pa,
-            pb);
+    if (is_max)
+        narrowed = b && (!a || *b < *a);  // absent = unbounded
+    else
+        narrowed = b.value_or(0) > a.value_or(0);
+    r.value(narrowed ? ChangeKind::slot_instances_narrowed : ChangeKind::slot_instances_widened, attr(path, name), name, dec(a),
+            dec(b), pa, pb);
 }
 
 std::string class_key(const SlotModuleClass& c) {
@@ -30,16 +32,20 @@ void compare_slot(Recorder& r, const std::string& p, const Slot& a, const Slot& 
     compare_texts(r, ChangeKind::name_changed, p, "Name", a.names, b.names, a.pos, b.pos);
     bound(r, p, "MinInstances", a.min_instances, b.min_instances, false, a.pos, b.pos);
     bound(r, p, "MaxInstances", a.max_instances, b.max_instances, true, a.pos, b.pos);
-    const auto layout = [&](std::string_view name, const std::optional<std::uint32_t>& x, const std::optional<std::uint32_t>& y, bool as_hex) {
-        r.value(ChangeKind::slot_layout_changed, attr(p, name), name, as_hex ? hex(x) : dec(x), as_hex ? hex(y) : dec(y), a.pos, b.pos);
+    const auto layout = [&](std::string_view name, const std::optional<std::uint32_t>& x, const std::optional<std::uint32_t>& y,
+                            bool as_hex) {
+        r.value(ChangeKind::slot_layout_changed, attr(p, name), name, as_hex ? hex(x) : dec(x), as_hex ? hex(y) : dec(y), a.pos,
+                b.pos);
     };
     layout("SlotGroup", a.slot_group, b.slot_group, false);
     layout("SlotPdoIncrement", a.slot_pdo_increment, b.slot_pdo_increment, true);
     layout("SlotGroupPdoIncrement", a.slot_group_pdo_increment, b.slot_group_pdo_increment, true);
     layout("SlotIndexIncrement", a.slot_index_increment, b.slot_index_increment, true);
     layout("SlotGroupIndexIncrement", a.slot_group_index_increment, b.slot_group_index_increment, true);
-    r.value(ChangeKind::slot_default_changed, attr(p, "Default"), "Default", hex(a.default_ident, 8), hex(b.default_ident, 8), a.pos, b.pos);
-    r.value(ChangeKind::slot_default_changed, attr(p, "Fallback"), "Fallback", hex(a.fallback, 8), hex(b.fallback, 8), a.pos, b.pos);
+    r.value(ChangeKind::slot_default_changed, attr(p, "Default"), "Default", hex(a.default_ident, 8), hex(b.default_ident, 8),
+            a.pos, b.pos);
+    r.value(ChangeKind::slot_default_changed, attr(p, "Fallback"), "Fallback", hex(a.fallback, 8), hex(b.fallback, 8), a.pos,
+            b.pos);
 
     std::map<std::uint32_t, const SlotModuleIdent*> ia;
     std::map<std::uint32_t, const SlotModuleIdent*> ib;
@@ -58,8 +64,8 @@ void compare_slot(Recorder& r, const std::string& p, const Slot& a, const Slot& 
     }
     for (const auto& [value, m] : ia)
         if (!ib.count(value))
-            r.add(ChangeKind::slot_module_removed, child(p, indexed("ModuleIdent", hex(value, 8))), hex(value, 8), std::nullopt, m->pos,
-                  b.pos, fmt::format("slot no longer accepts module {}", hex(value, 8)));
+            r.add(ChangeKind::slot_module_removed, child(p, indexed("ModuleIdent", hex(value, 8))), hex(value, 8), std::nullopt,
+                  m->pos, b.pos, fmt::format("slot no longer accepts module {}", hex(value, 8)));
 
     std::map<std::string, const SlotModuleClass*> ca;
     std::map<std::string, const SlotModuleClass*> cb;
@@ -69,7 +75,8 @@ void compare_slot(Recorder& r, const std::string& p, const Slot& a, const Slot& 
         const std::string cp = child(p, indexed("ModuleClass", key));
         const auto it = ca.find(key);
         if (it == ca.end()) {
-            r.add(ChangeKind::slot_module_added, cp, std::nullopt, key, a.pos, c->pos, fmt::format("slot accepts module class {}", key));
+            r.add(ChangeKind::slot_module_added, cp, std::nullopt, key, a.pos, c->pos,
+                  fmt::format("slot accepts module class {}", key));
             continue;
         }
         compare_texts(r, ChangeKind::name_changed, cp, "Name", it->second->names, c->names, it->second->pos, c->pos);
@@ -86,8 +93,8 @@ void compare_slot(Recorder& r, const std::string& p, const Slot& a, const Slot& 
 
 }  // namespace
 
-void compare_slots(Recorder& r, const std::string& path, const std::optional<Slots>& a, const std::optional<Slots>& b, SourcePos old_parent,
-                   SourcePos new_parent) {
+void compare_slots(Recorder& r, const std::string& path, const std::optional<Slots>& a, const std::optional<Slots>& b,
+                   SourcePos old_parent, SourcePos new_parent) {
     if (!a && !b) return;
     static const Slots none;
     const Slots& x = a ? *a : none;

@@ -93,7 +93,9 @@ std::vector<Match> match_devices(const std::vector<DeviceItem>& old_items, const
                                  const std::optional<std::pair<std::uint32_t, std::uint32_t>>& vendor_map) {
     std::map<FamilyKey, std::vector<const Device*>> old_families;
     std::map<FamilyKey, std::vector<const Device*>> new_families;
-    for (const auto& i : old_items) old_families[family_of(i, vendor_map && i.vendor == vendor_map->first ? vendor_map->second : i.vendor)].push_back(i.device);
+    for (const auto& i : old_items)
+        old_families[family_of(i, vendor_map && i.vendor == vendor_map->first ? vendor_map->second : i.vendor)].push_back(
+            i.device);
     for (const auto& i : new_items) new_families[family_of(i, i.vendor)].push_back(i.device);
     std::set<FamilyKey> keys;
     for (const auto& [k, v] : old_families) keys.insert(k);
@@ -149,7 +151,8 @@ SourcePos devices_pos(const EsiDocument& doc) {
     return doc.root_pos;
 }
 
-void compare_match(Recorder& r, const Match& m, const BrokenModules& broken_modules, SourcePos old_devices, SourcePos new_devices) {
+void compare_match(Recorder& r, const Match& m, const BrokenModules& broken_modules, SourcePos old_devices,
+                   SourcePos new_devices) {
     if (!m.old_device) {
         r.set_device(ref_of(*m.new_device), RevisionContext::same_revision);
         r.add(ChangeKind::device_added, "Device", std::nullopt, describe_device(*m.new_device), old_devices, m.new_device->pos,
@@ -184,10 +187,12 @@ void compare_match(Recorder& r, const Match& m, const BrokenModules& broken_modu
     if (device_broken || modules_broken)
         r.add(ChangeKind::revision_not_changed, attr("Type", "RevisionNo"), old_revision, new_revision, m.old_device->type.pos,
               m.new_device->type.pos,
-              fmt::format("breaking changes {}without a RevisionNo change (still {}): masters match devices by vendor, product code "
-                          "and revision, so configurations made from the old file accept the changed device",
-                          device_broken ? (modules_broken ? "to the device and to modules its slots accept " : "") : "to modules its slots accept ",
-                          new_revision.value_or("absent")));
+              fmt::format(
+                  "breaking changes {}without a RevisionNo change (still {}): masters match devices by vendor, product code "
+                  "and revision, so configurations made from the old file accept the changed device",
+                  device_broken ? (modules_broken ? "to the device and to modules its slots accept " : "")
+                                : "to modules its slots accept ",
+                  new_revision.value_or("absent")));
 }
 
 BrokenModules compare_file_level(Recorder& r, const EsiDocument& a, const EsiDocument& b) {
@@ -197,8 +202,8 @@ BrokenModules compare_file_level(Recorder& r, const EsiDocument& a, const EsiDoc
                 std::string(root_element_name(b.kind)), a.root_pos, b.root_pos);
     const std::string root = std::string(root_element_name(b.kind));
     compare_extras(r, root, a.root_extras, b.root_extras, a.root_pos, b.root_pos);
-    r.value(ChangeKind::info_version_changed, attr("EtherCATDict", "Version"), "EtherCATDict@Version", a.dict_version, b.dict_version,
-            a.root_pos, b.root_pos);
+    r.value(ChangeKind::info_version_changed, attr("EtherCATDict", "Version"), "EtherCATDict@Version", a.dict_version,
+            b.dict_version, a.root_pos, b.root_pos);
     if (a.dictionary || b.dictionary)
         compare_dictionaries(r, "Dictionary", a.dictionary ? &*a.dictionary : nullptr, b.dictionary ? &*b.dictionary : nullptr,
                              a.root_pos, b.root_pos);
@@ -212,7 +217,8 @@ BrokenModules compare_file_level(Recorder& r, const EsiDocument& a, const EsiDoc
         r.value(ChangeKind::info_version_changed, attr(p, "Version"), "EtherCATInfo@Version", x.version, y.version, x.pos, y.pos);
         compare_extras(r, p, x.extras, y.extras, x.pos, y.pos);
         compare_extras(r, child(p, "Descriptions"), x.descriptions_extras, y.descriptions_extras,
-                       x.descriptions_pos.known() ? x.descriptions_pos : x.pos, y.descriptions_pos.known() ? y.descriptions_pos : y.pos);
+                       x.descriptions_pos.known() ? x.descriptions_pos : x.pos,
+                       y.descriptions_pos.known() ? y.descriptions_pos : y.pos);
     }
 
     std::vector<const Group*> ga;
@@ -243,7 +249,9 @@ void compare_all_vendors(Recorder& r, const EsiDocument& a, const EsiDocument& b
     r.set_device(std::nullopt, RevisionContext::same_revision);
     auto compare_pair = [&](const Vendor* x, const Vendor* y) {
         if (only_id) {
-            if (x && y) r.value(ChangeKind::vendor_id_changed, "Vendor/Id", "vendor Id", hex(x->id, 8), hex(y->id, 8), x->id_pos, y->id_pos);
+            if (x && y)
+                r.value(ChangeKind::vendor_id_changed, "Vendor/Id", "vendor Id", hex(x->id, 8), hex(y->id, 8), x->id_pos,
+                        y->id_pos);
             return;
         }
         compare_vendors(r, x, y, a.root_pos, b.root_pos, true);
@@ -268,12 +276,18 @@ void compare_all_vendors(Recorder& r, const EsiDocument& a, const EsiDocument& b
 }
 
 // Order of devices in the output: file-level changes first, then by product code, revision,
-// Type text and name.
-auto device_order(const std::optional<DeviceRef>& d) {
-    return std::make_tuple(d.has_value(), d ? d->product_code.has_value() : false, d && d->product_code ? *d->product_code : 0u,
-                           d && d->revision ? static_cast<std::int64_t>(*d->revision) : -1,
-                           d && d->compared_revision ? static_cast<std::int64_t>(*d->compared_revision) : -1, d ? d->type : std::string(),
-                           d ? d->name : std::string());
+// compared revision, Type text and name.
+bool device_less(const DeviceRef& x, const DeviceRef& y) {
+    auto key = [](const DeviceRef& d) {
+        return std::make_tuple(!d.product_code.has_value(), d.product_code.value_or(0),
+                               d.revision ? static_cast<std::int64_t>(*d.revision) : -1,
+                               d.compared_revision ? static_cast<std::int64_t>(*d.compared_revision) : -1);
+    };
+    const auto kx = key(x);
+    const auto ky = key(y);
+    if (kx != ky) return kx < ky;
+    if (x.type != y.type) return x.type < y.type;
+    return x.name < y.name;
 }
 
 int kind_rank(ChangeKind kind) {
@@ -292,51 +306,81 @@ int kind_rank(ChangeKind kind) {
 // width and upper-case digits, so they already sort as text. The paths are compared as sequences
 // of tokens (such a number, or one character), numbers before characters: a total order.
 bool path_less(std::string_view a, std::string_view b) {
-    struct Token {
-        int kind;  // 0: bracketed number, 1: character
-        std::string_view text;
-    };
-    auto token_at = [](std::string_view s, std::size_t k) {
-        if (k > 0 && s[k - 1] == '[') {
-            std::size_t e = k;
-            while (e < s.size() && s[e] >= '0' && s[e] <= '9') ++e;
-            if (e > k && e < s.size() && s[e] == ']') return Token{0, s.substr(k, e - k)};
-        }
-        return Token{1, s.substr(k, 1)};
+    // Length of the decimal number starting at k when it fills a bracket ("[12]"), else 0.
+    auto number_at = [](std::string_view s, std::size_t k) -> std::size_t {
+        if (k == 0 || s[k - 1] != '[') return 0;
+        std::size_t e = k;
+        while (e < s.size() && s[e] >= '0' && s[e] <= '9') ++e;
+        return e > k && e < s.size() && s[e] == ']' ? e - k : 0;
     };
     std::size_t i = 0;
     std::size_t j = 0;
     while (i < a.size() && j < b.size()) {
-        const Token x = token_at(a, i);
-        const Token y = token_at(b, j);
-        if (x.kind != y.kind) return x.kind < y.kind;
-        if (x.text != y.text) {
-            if (x.kind == 0) {
-                const std::string_view xs = x.text.substr(std::min(x.text.find_first_not_of('0'), x.text.size()));
-                const std::string_view ys = y.text.substr(std::min(y.text.find_first_not_of('0'), y.text.size()));
+        if (a[i] >= '0' && a[i] <= '9' && b[j] >= '0' && b[j] <= '9') {
+            const std::size_t na = number_at(a, i);
+            const std::size_t nb = number_at(b, j);
+            if (na && nb) {
+                std::string_view x = a.substr(i, na);
+                std::string_view y = b.substr(j, nb);
+                const std::string_view xs = x.substr(std::min(x.find_first_not_of('0'), x.size()));
+                const std::string_view ys = y.substr(std::min(y.find_first_not_of('0'), y.size()));
                 if (xs.size() != ys.size()) return xs.size() < ys.size();
                 if (xs != ys) return xs < ys;
-                return x.text < y.text;
+                if (x != y) return x < y;
+                i += na;
+                j += nb;
+                continue;
             }
-            return x.text < y.text;
+            if (na || nb) return na != 0;  // a bracketed number sorts before any character
+        } else if ((a[i] >= '0' && a[i] <= '9' && number_at(a, i)) || (b[j] >= '0' && b[j] <= '9' && number_at(b, j))) {
+            return a[i] >= '0' && a[i] <= '9';
         }
-        i += x.text.size();
-        j += y.text.size();
+        if (a[i] != b[j]) return static_cast<unsigned char>(a[i]) < static_cast<unsigned char>(b[j]);
+        ++i;
+        ++j;
     }
     return a.size() - i < b.size() - j;
 }
 
 void sort_changes(std::vector<Change>& changes) {
-    std::stable_sort(changes.begin(), changes.end(), [](const Change& x, const Change& y) {
-        const auto dx = device_order(x.device);
-        const auto dy = device_order(y.device);
-        if (dx != dy) return dx < dy;
-        const int rx = kind_rank(x.kind);
-        const int ry = kind_rank(y.kind);
-        if (rx != ry) return rx < ry;
-        if (x.change_class != y.change_class) return x.change_class > y.change_class;
-        return path_less(x.path, y.path);
+    // Rank the devices once, then sort indices by small keys: comparing whole Changes (strings,
+    // optional device descriptions) in every step of the sort would cost more than the diff.
+    std::vector<const DeviceRef*> devices;
+    for (const auto& c : changes)
+        if (c.device) devices.push_back(&*c.device);
+    std::sort(devices.begin(), devices.end(), [](const DeviceRef* x, const DeviceRef* y) { return device_less(*x, *y); });
+    // Changes come device by device, so a run of changes of one device is ranked once.
+    const DeviceRef* last = nullptr;
+    std::size_t last_rank = 0;
+    auto device_rank = [&](const Change& c) -> std::size_t {
+        if (!c.device) return 0;
+        if (last && *last == *c.device) return last_rank;
+        const auto it = std::lower_bound(devices.begin(), devices.end(), &*c.device,
+                                         [](const DeviceRef* x, const DeviceRef* y) { return device_less(*x, *y); });
+        last = &*c.device;
+        last_rank = 1 + static_cast<std::size_t>(it - devices.begin());
+        return last_rank;
+    };
+    struct Key {
+        std::size_t device;
+        int kind;
+        int change_class;
+        std::size_t index;
+    };
+    std::vector<Key> keys;
+    keys.reserve(changes.size());
+    for (std::size_t i = 0; i < changes.size(); ++i)
+        keys.push_back({device_rank(changes[i]), kind_rank(changes[i].kind), -static_cast<int>(changes[i].change_class), i});
+    std::stable_sort(keys.begin(), keys.end(), [&](const Key& x, const Key& y) {
+        if (x.device != y.device) return x.device < y.device;
+        if (x.kind != y.kind) return x.kind < y.kind;
+        if (x.change_class != y.change_class) return x.change_class < y.change_class;
+        return path_less(changes[x.index].path, changes[y.index].path);
     });
+    std::vector<Change> sorted;
+    sorted.reserve(changes.size());
+    for (const Key& k : keys) sorted.push_back(std::move(changes[k.index]));
+    changes = std::move(sorted);
 }
 
 }  // namespace
@@ -347,7 +391,8 @@ std::size_t DiffResult::count(ChangeClass change_class) const {
 }
 
 std::size_t DiffResult::error_count() const {
-    return static_cast<std::size_t>(std::count_if(changes.begin(), changes.end(), [](const Change& c) { return is_error(c.kind); }));
+    return static_cast<std::size_t>(
+        std::count_if(changes.begin(), changes.end(), [](const Change& c) { return is_error(c.kind); }));
 }
 
 DiffResult diff_documents(const EsiDocument& old_document, const EsiDocument& new_document, const DiffOptions& options) {

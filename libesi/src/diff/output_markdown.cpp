@@ -21,12 +21,18 @@ constexpr std::size_t max_rows = 300;
 std::string cell(std::string_view s) {
     std::string out;
     for (char c : s) {
-        if (c == '|') out += "\\|";
-        else if (c == '\n' || c == '\r') out += ' ';
-        else if (c == '`') out += '\'';
-        else if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else out += c;
+        if (c == '|')
+            out += "\\|";
+        else if (c == '\n' || c == '\r')
+            out += ' ';
+        else if (c == '`')
+            out += '\'';
+        else if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else
+            out += c;
     }
     return out;
 }
@@ -34,10 +40,14 @@ std::string cell(std::string_view s) {
 std::string code(std::string_view s) {
     std::string out;
     for (char c : s) {
-        if (c == '|') out += "\\|";
-        else if (c == '\n' || c == '\r') out += ' ';
-        else if (c == '`') out += '\'';
-        else out += c;
+        if (c == '|')
+            out += "\\|";
+        else if (c == '\n' || c == '\r')
+            out += ' ';
+        else if (c == '`')
+            out += '\'';
+        else
+            out += c;
     }
     return "`" + out + "`";
 }
@@ -48,8 +58,9 @@ std::string lines(const Change& c) {
 }
 
 std::string row(const Change& c) {
-    const std::string label = is_error(c.kind) ? "**error**" : c.change_class == ChangeClass::breaking ? "**breaking**"
-                                                                                                      : std::string(to_string(c.change_class));
+    const std::string label = is_error(c.kind)                          ? "**error**"
+                              : c.change_class == ChangeClass::breaking ? "**breaking**"
+                                                                        : std::string(to_string(c.change_class));
     return fmt::format("| {} | {} | {} | {} |\n", label, code(c.path.empty() ? "." : c.path), cell(c.message), lines(c));
 }
 
@@ -62,10 +73,11 @@ std::string render_diff_markdown(const DiffResult& result, const DiffLabels& lab
     out += fmt::format("{} → {}: {}.\n", code(labels.old_path), code(labels.new_path), class_counts(result));
     if (result.identical()) return out;
     if (const std::size_t errors = result.error_count())
-        out += fmt::format("\n> [!CAUTION]\n> {} device{} changed in a breaking way without a new RevisionNo. Masters match devices by "
-                           "vendor, product code and revision, so configurations made from the old file will accept the changed "
-                           "device.\n",
-                           errors, errors == 1 ? "" : "s");
+        out += fmt::format(
+            "\n> [!CAUTION]\n> {} device{} changed in a breaking way without a new RevisionNo. Masters match devices by "
+            "vendor, product code and revision, so configurations made from the old file will accept the changed "
+            "device.\n",
+            errors, errors == 1 ? "" : "s");
 
     std::size_t rows = 0;
     std::size_t left_out = 0;
@@ -86,8 +98,8 @@ std::string render_diff_markdown(const DiffResult& result, const DiffLabels& lab
             }
         }
         if (!folded.empty()) {
-            out += fmt::format("{}<details><summary>{} cosmetic change{}</summary>\n\n{}", shown.empty() ? "" : "\n", folded.size(),
-                               folded.size() == 1 ? "" : "s", table_head);
+            out += fmt::format("{}<details><summary>{} cosmetic change{}</summary>\n\n{}", shown.empty() ? "" : "\n",
+                               folded.size(), folded.size() == 1 ? "" : "s", table_head);
             for (const Change* c : folded) {
                 if (rows++ >= max_rows) {
                     ++left_out;
@@ -99,8 +111,9 @@ std::string render_diff_markdown(const DiffResult& result, const DiffLabels& lab
         }
     }
     if (left_out)
-        out += fmt::format("\n{} more change{} left out to keep this comment short; run `esi-diff --format text` for all of them.\n",
-                           left_out, left_out == 1 ? "" : "s");
+        out +=
+            fmt::format("\n{} more change{} left out to keep this comment short; run `esi-diff --format text` for all of them.\n",
+                        left_out, left_out == 1 ? "" : "s");
     return out;
 }
 

@@ -19,6 +19,14 @@ std::string location(const std::string& path, SourcePos pos) {
     return fmt::format("{}:{}:{}", path, pos.line, pos.column);
 }
 
+// A change is one line: line breaks inside names or unmodelled text become spaces.
+std::string one_line(std::string_view s) {
+    std::string out(s);
+    for (char& c : out)
+        if (c == '\n' || c == '\r' || c == '\t') c = ' ';
+    return out;
+}
+
 }  // namespace
 
 std::string render_diff_text(const DiffResult& result, const DiffLabels& labels) {
@@ -29,12 +37,14 @@ std::string render_diff_text(const DiffResult& result, const DiffLabels& labels)
     out += ")\n";
 
     for (const auto& group : group_by_device(result)) {
-        out += fmt::format("\n{}{}: {}\n", group.device->has_value() ? "Device " : "", device_heading(*group.device),
+        out += fmt::format("\n{}{}: {}\n", group.device->has_value() ? "Device " : "", one_line(device_heading(*group.device)),
                            group.has_error ? "error" : to_string(group.worst));
         for (const Change* c : group.changes) {
             const std::string_view label = is_error(c->kind) ? std::string_view("error") : to_string(c->change_class);
-            out += fmt::format("  {:<10}  {}: {} [{}]\n", label, c->path.empty() ? "." : c->path, c->message, to_string(c->kind));
-            out += fmt::format("  {:<10}  {} -> {}\n", "", location(labels.old_path, c->old_pos), location(labels.new_path, c->new_pos));
+            out += fmt::format("  {:<10}  {}: {} [{}]\n", label, c->path.empty() ? "." : one_line(c->path), one_line(c->message),
+                               to_string(c->kind));
+            out += fmt::format("  {:<10}  {} -> {}\n", "", location(labels.old_path, c->old_pos),
+                               location(labels.new_path, c->new_pos));
         }
     }
     return out;

@@ -27,15 +27,16 @@ void Recorder::add(ChangeKind kind, std::string path, std::optional<std::string>
     out_.push_back(std::move(c));
 }
 
-bool Recorder::value(ChangeKind kind, const std::string& path, std::string_view what, const std::optional<std::string>& old_value,
-                     const std::optional<std::string>& new_value, SourcePos old_pos, SourcePos new_pos) {
-    if (old_value == new_value) return false;
+void Recorder::record_value(ChangeKind kind, const Path& path, std::string_view what, const std::optional<std::string>& old_value,
+                            const std::optional<std::string>& new_value, SourcePos old_pos, SourcePos new_pos) {
     std::string message;
-    if (old_value && new_value) message = fmt::format("{} changed from {} to {}", what, *old_value, *new_value);
-    else if (new_value) message = fmt::format("{} {} added", what, *new_value);
-    else message = fmt::format("{} {} removed", what, *old_value);
-    add(kind, path, old_value, new_value, old_pos, new_pos, std::move(message));
-    return true;
+    if (old_value && new_value)
+        message = fmt::format("{} changed from {} to {}", what, *old_value, *new_value);
+    else if (new_value)
+        message = fmt::format("{} {} added", what, *new_value);
+    else
+        message = fmt::format("{} {} removed", what, *old_value);
+    add(kind, path.str(), old_value, new_value, old_pos, new_pos, std::move(message));
 }
 
 bool Recorder::breaking_since(std::size_t mark) const {
@@ -44,14 +45,26 @@ bool Recorder::breaking_since(std::size_t mark) const {
     return false;
 }
 
-std::string child(std::string_view parent, std::string_view element) {
-    if (parent.empty()) return std::string(element);
-    return fmt::format("{}/{}", parent, element);
+std::string Path::str() const {
+    std::string out;
+    out.reserve(prefix_.size() + separator_.size() + leaf_.size());
+    out.append(prefix_).append(separator_).append(leaf_);
+    return out;
 }
 
-std::string attr(std::string_view element, std::string_view attribute) { return fmt::format("{}@{}", element, attribute); }
+Path child(std::string_view parent, std::string_view element) {
+    if (parent.empty()) return Path(element, {}, {});
+    return Path(parent, "/", element);
+}
 
-std::string indexed(std::string_view element, std::string_view key) { return fmt::format("{}[{}]", element, key); }
+Path attr(std::string_view element, std::string_view attribute) { return Path(element, "@", attribute); }
+
+std::string indexed(std::string_view element, std::string_view key) {
+    std::string out;
+    out.reserve(element.size() + key.size() + 2);
+    out.append(element).append("[").append(key).append("]");
+    return out;
+}
 
 std::string hex(std::uint64_t value, int digits) { return format_hex(value, digits); }
 
@@ -84,7 +97,9 @@ std::optional<std::string> text(const std::optional<std::string>& value) {
     return std::string(trim(*value));
 }
 
-std::string entry_key(std::uint32_t index, std::uint32_t subindex) { return fmt::format("{}:{:02X}", format_hex(index, 4), subindex); }
+std::string entry_key(std::uint32_t index, std::uint32_t subindex) {
+    return fmt::format("{}:{:02X}", format_hex(index, 4), subindex);
+}
 
 std::string quote(std::string_view text) { return fmt::format("'{}'", text); }
 
@@ -98,14 +113,25 @@ namespace {
 
 std::string lcid_key(const LocalizedText& t) { return t.lcid ? std::to_string(*t.lcid) : std::string(); }
 
+// Unmodelled text can be long (embedded data, descriptions): messages quote the start of it.
+std::string shortened(std::string_view text) {
+    constexpr std::size_t limit = 80;
+    if (text.size() <= limit) return std::string(text);
+    std::size_t cut = limit;
+    while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // keep UTF-8 sequences whole
+    return std::string(text.substr(0, cut)) + "…";
+}
+
 // One line of an element for messages: <Name a="b">text…</Name>, shortened.
 std::string describe(const XmlElement& e) {
     std::string out = "<" + e.name;
     for (const auto& a : e.attributes) out += fmt::format(" {}=\"{}\"", a.name, a.value);
     out += ">";
     const std::string_view t = trim(e.text);
-    if (!t.empty()) out += std::string(t.substr(0, 60)) + (t.size() > 60 ? "…" : "");
-    else if (!e.children.empty()) out += "…";
+    if (!t.empty())
+        out += std::string(t.substr(0, 60)) + (t.size() > 60 ? "…" : "");
+    else if (!e.children.empty())
+        out += "…";
     return out;
 }
 
@@ -154,10 +180,35 @@ Difference first_difference(const XmlElement& a, const XmlElement& b, std::strin
     return {child(path, b.children[n].name), std::nullopt, describe(b.children[n])};
 }
 
+// Texts shown to users compare with whitespace runs collapsed: a name wrapped over two lines in
+// one file and written on one line in the other is the same name.
+bool same_text(std::string_view a, std::string_view b) {
+    if (a == b) return true;
+    auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+    std::size_t i = 0;
+    std::size_t j = 0;
+    while (true) {  // word by word
+        while (i < a.size() && space(a[i])) ++i;
+        while (j < b.size() && space(b[j])) ++j;
+        if (i == a.size() || j == b.size()) return i == a.size() && j == b.size();
+        while (i < a.size() && j < b.size() && !space(a[i]) && !space(b[j])) {
+            if (a[i] != b[j]) return false;
+            ++i;
+            ++j;
+        }
+        if ((i < a.size() && !space(a[i])) || (j < b.size() && !space(b[j]))) return false;
+    }
+}
+
 }  // namespace
 
 void compare_texts(Recorder& r, ChangeKind kind, const std::string& path, std::string_view element, const Names& old_names,
                    const Names& new_names, SourcePos old_parent, SourcePos new_parent) {
+    // Usually nothing changed: the same texts in the same order.
+    if (old_names.size() == new_names.size() &&
+        std::equal(old_names.begin(), old_names.end(), new_names.begin(),
+                   [](const LocalizedText& x, const LocalizedText& y) { return x.lcid == y.lcid && same_text(x.text, y.text); }))
+        return;
     // Per LcId; several texts with the same LcId (or none) pair up in order.
     std::map<std::string, std::vector<const LocalizedText*>> a;
     std::map<std::string, std::vector<const LocalizedText*>> b;
@@ -178,20 +229,29 @@ void compare_texts(Recorder& r, ChangeKind kind, const std::string& path, std::s
             std::string label = key.empty() ? std::string(element) : indexed(element, key);
             if (i > 0) label += fmt::format("#{}", i + 1);
             const std::string p = child(path, label);
-            if (x && y && x->text == y->text) continue;
+            if (x && y && same_text(x->text, y->text)) continue;
             const std::string what = key.empty() ? std::string(element) : fmt::format("{} (LcId {})", element, key);
             std::string message;
-            if (x && y) message = fmt::format("{} changed from {} to {}", what, quote(x->text), quote(y->text));
-            else if (y) message = fmt::format("{} {} added", what, quote(y->text));
-            else message = fmt::format("{} {} removed", what, quote(x->text));
-            r.add(kind, p, x ? std::optional<std::string>(x->text) : std::nullopt, y ? std::optional<std::string>(y->text) : std::nullopt,
-                  x ? x->pos : old_parent, y ? y->pos : new_parent, std::move(message));
+            if (x && y)
+                message = fmt::format("{} changed from {} to {}", what, quote(x->text), quote(y->text));
+            else if (y)
+                message = fmt::format("{} {} added", what, quote(y->text));
+            else
+                message = fmt::format("{} {} removed", what, quote(x->text));
+            r.add(kind, p, x ? std::optional<std::string>(x->text) : std::nullopt,
+                  y ? std::optional<std::string>(y->text) : std::nullopt, x ? x->pos : old_parent, y ? y->pos : new_parent,
+                  std::move(message));
         }
     }
 }
 
-void compare_extras(Recorder& r, const std::string& path, const Extras& old_extras, const Extras& new_extras, SourcePos old_parent,
-                    SourcePos new_parent) {
+void compare_extras(Recorder& r, const std::string& path, const Extras& old_extras, const Extras& new_extras,
+                    SourcePos old_parent, SourcePos new_parent) {
+    // Usually nothing changed: the same attributes and elements in the same order.
+    if (old_extras.attributes == new_extras.attributes && old_extras.elements.size() == new_extras.elements.size() &&
+        std::equal(old_extras.elements.begin(), old_extras.elements.end(), new_extras.elements.begin(),
+                   [](const XmlElement& x, const XmlElement& y) { return same_content(x, y); }))
+        return;
     std::map<std::string, std::string> aa;
     std::map<std::string, std::string> ba;
     for (const auto& x : old_extras.attributes) aa[x.name] = x.value;
@@ -204,9 +264,10 @@ void compare_extras(Recorder& r, const std::string& path, const Extras& old_extr
     for (const auto& name : names) {
         const auto ia = aa.find(name);
         const auto ib = ba.find(name);
-        r.value(ChangeKind::extras_changed, attr(path.empty() ? "." : path, name), fmt::format("attribute {}", name),
-                ia == aa.end() ? std::nullopt : std::optional<std::string>(ia->second),
-                ib == ba.end() ? std::nullopt : std::optional<std::string>(ib->second), old_parent, new_parent);
+        r.value(
+            ChangeKind::extras_changed, attr(path.empty() ? "." : path, name), [&] { return fmt::format("attribute {}", name); },
+            ia == aa.end() ? std::nullopt : std::optional<std::string>(ia->second),
+            ib == ba.end() ? std::nullopt : std::optional<std::string>(ib->second), old_parent, new_parent);
     }
 
     // Elements by name, k-th occurrence with k-th occurrence.
@@ -234,9 +295,13 @@ void compare_extras(Recorder& r, const std::string& path, const Extras& old_extr
                 if (same_element(*x, *y)) continue;
                 Difference d = first_difference(*x, *y, p);
                 std::string message = fmt::format("unmodelled element {} changed", p);
-                if (d.old_value && d.new_value) message += fmt::format(": {} from {} to {}", d.path, quote(*d.old_value), quote(*d.new_value));
-                else if (d.new_value) message += fmt::format(": {} added", d.path);
-                else message += fmt::format(": {} removed", d.path);
+                if (d.old_value && d.new_value)
+                    message +=
+                        fmt::format(": {} from {} to {}", d.path, quote(shortened(*d.old_value)), quote(shortened(*d.new_value)));
+                else if (d.new_value)
+                    message += fmt::format(": {} added", d.path);
+                else
+                    message += fmt::format(": {} removed", d.path);
                 r.add(ChangeKind::extras_changed, d.path, d.old_value, d.new_value, x->pos, y->pos, std::move(message));
             } else if (y) {
                 r.add(ChangeKind::extras_changed, p, std::nullopt, describe(*y), old_parent, y->pos,
@@ -249,15 +314,18 @@ void compare_extras(Recorder& r, const std::string& path, const Extras& old_extr
     }
 }
 
-void compare_images(Recorder& r, const std::string& path, const Images& a, const Images& b, SourcePos old_parent, SourcePos new_parent) {
-    r.value(ChangeKind::image_changed, child(path, "Image16x14"), "Image16x14", a.image16x14, b.image16x14, old_parent, new_parent);
+void compare_images(Recorder& r, const std::string& path, const Images& a, const Images& b, SourcePos old_parent,
+                    SourcePos new_parent) {
+    r.value(ChangeKind::image_changed, child(path, "Image16x14"), "Image16x14", a.image16x14, b.image16x14, old_parent,
+            new_parent);
     r.value(ChangeKind::image_changed, child(path, "ImageFile16x14"), "ImageFile16x14", a.image_file16x14, b.image_file16x14,
             old_parent, new_parent);
     const auto da = a.image_data16x14 ? std::optional<std::string>(normalized_hex(*a.image_data16x14)) : std::nullopt;
     const auto db = b.image_data16x14 ? std::optional<std::string>(normalized_hex(*b.image_data16x14)) : std::nullopt;
     if (da != db) {
         const char* what = !da ? "added" : !db ? "removed" : "changed";
-        r.add(ChangeKind::image_changed, child(path, "ImageData16x14"), da ? std::optional<std::string>(fmt::format("{} bytes", da->size() / 2)) : std::nullopt,
+        r.add(ChangeKind::image_changed, child(path, "ImageData16x14"),
+              da ? std::optional<std::string>(fmt::format("{} bytes", da->size() / 2)) : std::nullopt,
               db ? std::optional<std::string>(fmt::format("{} bytes", db->size() / 2)) : std::nullopt,
               a.image_data16x14 ? a.image_data16x14->pos : old_parent, b.image_data16x14 ? b.image_data16x14->pos : new_parent,
               fmt::format("ImageData16x14 {}", what));

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "esi/diff/change.hpp"
@@ -14,6 +15,25 @@
 #include "esi/number.hpp"
 
 namespace esi::diff_detail {
+
+// A model path as a prefix, a separator and a last part, joined only when a change is recorded:
+// most comparisons find nothing, and building every path string would cost more than comparing.
+// A Path refers to the strings it was made from; use it within the expression that made it, or
+// turn it into a std::string.
+class Path {
+public:
+    Path(const std::string& whole) : prefix_(whole) {}  // NOLINT: implicit by design
+    Path(const char* whole) : prefix_(whole) {}         // NOLINT
+    Path(std::string_view prefix, std::string_view separator, std::string_view leaf)
+        : prefix_(prefix), separator_(separator), leaf_(leaf) {}
+    [[nodiscard]] std::string str() const;
+    operator std::string() const { return str(); }  // NOLINT
+
+private:
+    std::string_view prefix_;
+    std::string_view separator_;
+    std::string_view leaf_;
+};
 
 class Recorder {
 public:
@@ -31,24 +51,36 @@ public:
              SourcePos old_pos, SourcePos new_pos, std::string message);
 
     // Records "<what> changed from A to B" (or added/removed) when the spelled values differ.
+    // `what` is a string, or a function returning one (called only when something is recorded).
     // Returns whether something was recorded.
-    bool value(ChangeKind kind, const std::string& path, std::string_view what, const std::optional<std::string>& old_value,
-               const std::optional<std::string>& new_value, SourcePos old_pos, SourcePos new_pos);
+    template <class What>
+    bool value(ChangeKind kind, const Path& path, What&& what, const std::optional<std::string>& old_value,
+               const std::optional<std::string>& new_value, SourcePos old_pos, SourcePos new_pos) {
+        if (old_value == new_value) return false;
+        if constexpr (std::is_invocable_v<What>)
+            record_value(kind, path, std::string(what()), old_value, new_value, old_pos, new_pos);
+        else
+            record_value(kind, path, std::string_view(what), old_value, new_value, old_pos, new_pos);
+        return true;
+    }
 
     [[nodiscard]] std::size_t size() const { return out_.size(); }
     // Whether any change recorded after `mark` (a size()) is breaking.
     [[nodiscard]] bool breaking_since(std::size_t mark) const;
 
 private:
+    void record_value(ChangeKind kind, const Path& path, std::string_view what, const std::optional<std::string>& old_value,
+                      const std::optional<std::string>& new_value, SourcePos old_pos, SourcePos new_pos);
+
     std::vector<Change>& out_;
     std::optional<DeviceRef> device_;
     RevisionContext context_ = RevisionContext::same_revision;
 };
 
 // ---- paths ---------------------------------------------------------------------------------
-[[nodiscard]] std::string child(std::string_view parent, std::string_view element);  // "a/b"
-[[nodiscard]] std::string attr(std::string_view element, std::string_view attribute);  // "a@b"
-[[nodiscard]] std::string indexed(std::string_view element, std::string_view key);     // "a[key]"
+[[nodiscard]] Path child(std::string_view parent, std::string_view element);        // "a/b"
+[[nodiscard]] Path attr(std::string_view element, std::string_view attribute);      // "a@b"
+[[nodiscard]] std::string indexed(std::string_view element, std::string_view key);  // "a[key]"
 
 // ---- spelling of values ----------------------------------------------------------------------
 [[nodiscard]] std::string hex(std::uint64_t value, int digits = 4);  // "#x1600"
@@ -77,8 +109,7 @@ void compare_texts(Recorder& r, ChangeKind kind, const std::string& path, std::s
 void compare_extras(Recorder& r, const std::string& path, const Extras& old_extras, const Extras& new_extras,
                     SourcePos old_parent, SourcePos new_parent);
 
-void compare_images(Recorder& r, const std::string& path, const Images& old_images, const Images& new_images, SourcePos old_parent,
-                    SourcePos new_parent);
+void compare_images(Recorder& r, const std::string& path, const Images& old_images, const Images& new_images,
+                    SourcePos old_parent, SourcePos new_parent);
 
 }  // namespace esi::diff_detail
-

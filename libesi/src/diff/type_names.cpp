@@ -40,7 +40,8 @@ bool same_resolved(const Dictionary* da, const ResolvedType& a, std::string_view
         const auto& ys = b.definition->sub_items;
         if (xs.size() != ys.size()) return false;
         for (std::size_t i = 0; i < xs.size(); ++i) {
-            if (xs[i].subindex != ys[i].subindex || xs[i].bit_size != ys[i].bit_size || xs[i].bit_offset != ys[i].bit_offset) return false;
+            if (xs[i].subindex != ys[i].subindex || xs[i].bit_size != ys[i].bit_size || xs[i].bit_offset != ys[i].bit_offset)
+                return false;
             if (!same_layout(da, xs[i].type, db, ys[i].type, depth + 1)) return false;
         }
     }

@@ -20,7 +20,7 @@ enum class TypeMatch { same, spelling, different };
 [[nodiscard]] TypeMatch compare_type_names(std::string_view old_name, std::string_view new_name);
 
 // Names resolved in their dictionaries: bit size, basic type, array bounds and structure compared.
-[[nodiscard]] TypeMatch compare_types(const Dictionary* old_dictionary, std::string_view old_name, const Dictionary* new_dictionary,
-                                      std::string_view new_name);
+[[nodiscard]] TypeMatch compare_types(const Dictionary* old_dictionary, std::string_view old_name,
+                                      const Dictionary* new_dictionary, std::string_view new_name);
 
 }  // namespace esi::diff_detail
