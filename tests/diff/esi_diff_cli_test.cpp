@@ -65,7 +65,9 @@ TEST(EsiDiffCli, DeviceSelectorAcceptsDecimalAndHexWithRevision) {
     const auto decimal = run({tool("esi-diff"), "--device", "8194", "--format", "json", data("old.xml"), data("new.xml")});
     EXPECT_EQ(hash.out, c_hex.out);
     EXPECT_EQ(hash.out, decimal.out);
-    for (const auto& c : nlohmann::json::parse(hash.out).at("changes")) EXPECT_EQ(c.at("device").at("product_code"), 0x2002);
+    const auto parsed = nlohmann::json::parse(hash.out);
+    ASSERT_FALSE(parsed.at("changes").empty());
+    for (const auto& c : parsed.at("changes")) EXPECT_EQ(c.at("device").at("product_code"), 0x2002);
     // The second device only has a bumped revision and a changed SM size: breaking, but no revision error.
     EXPECT_EQ(hash.exit_code, 1);
     EXPECT_EQ(hash.out.find("revision-not-changed"), std::string::npos);

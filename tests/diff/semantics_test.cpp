@@ -204,3 +204,31 @@ TEST(DiffSemantics, OutputIsDeterministic) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(DiffSemantics, InfoSubItemThatMatchesNoSubEntryIsStillCompared) {
+    const std::string extra = "<SubItem><Name>Filter</Name><Info><DefaultValue>100</DefaultValue></Info></SubItem>";
+    const std::string with =
+        edit(diff_base, extra, extra + "<SubItem><Name>Spare</Name><Info><DefaultValue>7</DefaultValue></Info></SubItem>");
+    const esi::DiffResult r = diff_texts(with, edit(with, "<DefaultValue>7</DefaultValue>", "<DefaultValue>8</DefaultValue>"));
+    ASSERT_EQ(r.changes.size(), 1u) << esi::test::describe(r);
+    EXPECT_EQ(r.changes[0].kind, ChangeKind::object_default_changed);
+    EXPECT_EQ(r.changes[0].path, "Dictionary/Object[#x8000]/Info/SubItem[3]");
+}
+
+TEST(DiffSemantics, EmptyContainerElementsAreReportedAsSpelling) {
+    const std::string a =
+        "<?xml version=\"1.0\"?><EtherCATInfo><Vendor><Id>1</Id></Vendor><Descriptions><Devices/></Descriptions></EtherCATInfo>";
+    const std::string b =
+        "<?xml "
+        "version=\"1.0\"?><EtherCATInfo><Vendor><Id>1</Id></Vendor><Descriptions><Devices/><Modules/></Descriptions></"
+        "EtherCATInfo>";
+    const esi::DiffResult r = diff_texts(a, b);
+    ASSERT_EQ(r.changes.size(), 1u) << esi::test::describe(r);
+    EXPECT_EQ(r.changes[0].kind, ChangeKind::spelling_changed);
+    EXPECT_EQ(r.changes[0].change_class, esi::ChangeClass::cosmetic);
+    EXPECT_EQ(r.changes[0].path, "EtherCATInfo/Modules");
+}
+
+}  // namespace

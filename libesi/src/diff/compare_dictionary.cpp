@@ -297,6 +297,51 @@ void compare_info_text(Recorder& r, const std::string& p, const ObjectInfo* a, c
     compare_extras(r, child(p, "Info"), a ? a->extras : none, b ? b->extras : none, pa, pb);
 }
 
+// Object/Info/SubItem as written: the names that match them to sub-entries, their unmodelled
+// XML, and the values of those that match no sub-entry (values of matched ones were compared
+// per sub-entry already).
+void compare_info_sub_items(Recorder& r, const std::string& p, const Object& a, const Object& b, const ObjectLayout& la,
+                            const ObjectLayout& lb) {
+    static const std::vector<ObjectSubItemInfo> none;
+    const auto& xs = a.info ? a.info->sub_items : none;
+    const auto& ys = b.info ? b.info->sub_items : none;
+    if (xs.empty() && ys.empty()) return;
+    auto used = [](const ObjectLayout& l, const ObjectSubItemInfo& s) {
+        return std::any_of(l.entries.begin(), l.entries.end(), [&](const ObjectEntry& e) { return e.info == &s.info; });
+    };
+    const std::size_t n = std::max(xs.size(), ys.size());
+    for (std::size_t k = 0; k < n; ++k) {
+        const ObjectSubItemInfo* x = k < xs.size() ? &xs[k] : nullptr;
+        const ObjectSubItemInfo* y = k < ys.size() ? &ys[k] : nullptr;
+        const std::string sp = child(p, indexed("Info/SubItem", std::to_string(k + 1)));
+        const SourcePos px = x ? x->pos : a.pos;
+        const SourcePos py = y ? y->pos : b.pos;
+        const bool matched = (x && used(la, *x)) || (y && used(lb, *y));
+        if (!matched) {
+            // Values no sub-entry reads: compared as written.
+            auto spell = [](const ObjectSubItemInfo* s) -> std::optional<std::string> {
+                if (!s) return std::nullopt;
+                const ObjectInfo& i = s->info;
+                std::string out = s->name;
+                if (i.default_value) out += " default " + format_decimal(*i.default_value);
+                if (i.default_data) out += " default data " + normalized_hex(*i.default_data);
+                if (i.default_string) out += " default " + quote(*i.default_string);
+                if (i.min_value) out += " min " + format_decimal(*i.min_value);
+                if (i.max_value) out += " max " + format_decimal(*i.max_value);
+                if (i.min_data) out += " min data " + normalized_hex(*i.min_data);
+                if (i.max_data) out += " max data " + normalized_hex(*i.max_data);
+                return out;
+            };
+            r.value(ChangeKind::object_default_changed, sp, "Info/SubItem that matches no sub-entry", spell(x), spell(y), px, py);
+            continue;
+        }
+        if (x && y) {
+            r.value(ChangeKind::name_changed, child(sp, "Name"), "Info/SubItem name", x->name, y->name, px, py);
+            compare_extras(r, sp, x->extras, y->extras, px, py);
+        }
+    }
+}
+
 // ---- objects -------------------------------------------------------------------------------
 
 std::string object_path(const std::string& path, std::uint32_t index) { return child(path, indexed("Object", hex(index))); }
@@ -384,6 +429,7 @@ void compare_object(Recorder& r, const std::string& path, const Dictionary* da, 
         }
         compare_info_values(r, ep, a.index, *ea, *eb, a.pos, b.pos);
     }
+    compare_info_sub_items(r, p, a, b, la, lb);
     compare_extras(r, p, a.extras, b.extras, a.pos, b.pos);
 }
 

@@ -216,6 +216,13 @@ BrokenModules compare_file_level(Recorder& r, const EsiDocument& a, const EsiDoc
         const std::string p = infos > 1 ? indexed("EtherCATInfo", std::to_string(i + 1)) : std::string("EtherCATInfo");
         r.value(ChangeKind::info_version_changed, attr(p, "Version"), "EtherCATInfo@Version", x.version, y.version, x.pos, y.pos);
         compare_extras(r, p, x.extras, y.extras, x.pos, y.pos);
+        // An empty Descriptions or Modules element carries nothing, but it is written or not.
+        const auto present = [](bool b) { return std::optional<std::string>(b ? "present" : "absent"); };
+        r.value(ChangeKind::spelling_changed, child(p, "Descriptions"), "Descriptions element", present(x.has_descriptions),
+                present(y.has_descriptions), x.pos, y.pos);
+        if (x.modules.empty() && y.modules.empty())
+            r.value(ChangeKind::spelling_changed, child(p, "Modules"), "empty Modules element", present(x.has_modules),
+                    present(y.has_modules), x.pos, y.pos);
         compare_extras(r, child(p, "Descriptions"), x.descriptions_extras, y.descriptions_extras,
                        x.descriptions_pos.known() ? x.descriptions_pos : x.pos,
                        y.descriptions_pos.known() ? y.descriptions_pos : y.pos);
