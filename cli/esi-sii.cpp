@@ -1,0 +1,219 @@
+// esi-sii: SII EEPROM images. `build` writes the image of an ESI (or YAML) device, `dump`
+// decodes an image and reports every fault with its byte offset, `check` compares an image
+// with its ESI device as the ETG conformance tool does.
+// Exit codes: 0 all well, 1 dump found a fault / check found a mismatch, 2 usage error or
+// unreadable/unusable input.
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <fmt/format.h>
+#include <iostream>
+
+#include "esi/device_selector.hpp"
+#include "esi/io/atomic_write.hpp"
+#include "esi/sii/build.hpp"
+#include "esi/sii/check.hpp"
+#include "esi/sii/decode.hpp"
+#include "esi/sii/output.hpp"
+#include "esi/sii/render.hpp"
+#include "esi/version.hpp"
+#include "esi/xml/reader.hpp"
+#include "esi/yaml/source.hpp"
+
+namespace {
+
+constexpr int exit_clean = 0;
+constexpr int exit_findings = 1;
+constexpr int exit_usage = 2;
+
+void print(std::FILE* stream, const std::string& text) {
+    std::fwrite(text.data(), 1, text.size(), stream);
+    std::fflush(stream);
+}
+
+bool is_yaml(const std::filesystem::path& path) {
+    const std::string ext = path.extension().string();
+    return ext == ".yaml" || ext == ".yml";
+}
+
+// The document of an ESI or YAML input; nullopt (after printing why) when unusable.
+std::optional<esi::EsiDocument> load_document(const std::string& input) {
+    esi::Diagnostics diagnostics;
+    std::optional<esi::EsiDocument> document;
+    if (is_yaml(input)) {
+        esi::DeviceSource source = esi::load_device_source_file(input);
+        diagnostics = std::move(source.diagnostics);
+        document = std::move(source.document);
+    } else {
+        esi::ReadResult read = esi::read_esi_file(input);
+        diagnostics = std::move(read.diagnostics);
+        document = std::move(read.document);
+    }
+    esi::Diagnostics errors;
+    for (const auto& d : diagnostics)
+        if (d.severity == esi::Severity::error) errors.add(d);
+    print(stderr, esi::sii::render_diagnostics_text(errors));
+    if (!document || (is_yaml(input) && diagnostics.has_errors())) {
+        print(stderr, fmt::format("esi-sii: {}: cannot use this input\n", input));
+        return std::nullopt;
+    }
+    return document;
+}
+
+std::string device_label(const esi::Device& d) {
+    return fmt::format("{} (product code 0x{:08X}, revision 0x{:08X})", d.type.text, d.type.product_code.value_or(0),
+                       d.type.revision_no.value_or(0));
+}
+
+std::string device_list(const std::vector<const esi::Device*>& devices) {
+    std::string out;
+    for (const auto* d : devices)
+        out += fmt::format("  --device 0x{:08X}:0x{:08X}  {}\n", d->type.product_code.value_or(0), d->type.revision_no.value_or(0),
+                           d->type.text);
+    return out;
+}
+
+const esi::EtherCATInfo* info_of(const esi::EsiDocument& document, const esi::Device* device) {
+    for (const auto& info : document.infos)
+        for (const auto& d : info.devices)
+            if (&d == device) return &info;
+    return nullptr;
+}
+
+int run_build(const std::string& input, const std::string& output, const std::string& device_text, const std::string& format_text,
+              bool no_pdo, bool no_dc) {
+    esi::sii::ImageFormat format{};
+    if (!esi::sii::parse_image_format(format_text, format)) {
+        print(stderr, fmt::format("esi-sii build: --format must be bin, hex or c (not '{}')\n", format_text));
+        return exit_usage;
+    }
+    std::optional<esi::DeviceSelector> selector;
+    if (!device_text.empty()) {
+        std::string error;
+        selector = esi::parse_device_selector(device_text, error);
+        if (!selector) {
+            print(stderr, fmt::format("esi-sii build: --device: {}\n", error));
+            return exit_usage;
+        }
+    }
+    const std::optional<esi::EsiDocument> document = load_document(input);
+    if (!document) return exit_usage;
+    const std::vector<const esi::Device*> all = esi::select_devices(*document, std::nullopt);
+    const std::vector<const esi::Device*> chosen = esi::select_devices(*document, selector);
+    if (all.empty()) {
+        print(stderr, fmt::format("esi-sii build: {} describes no device\n", input));
+        return exit_usage;
+    }
+    if (chosen.empty()) {
+        print(stderr, fmt::format("esi-sii build: no device of {} matches --device {}; the file has:\n{}", input, device_text,
+                                  device_list(all)));
+        return exit_usage;
+    }
+    if (chosen.size() > 1) {
+        print(stderr, fmt::format("esi-sii build: {} has {} devices{}; choose one with --device:\n{}", input, chosen.size(),
+                                  selector ? " matching --device " + device_text : "", device_list(chosen)));
+        return exit_usage;
+    }
+    const esi::Device& device = *chosen.front();
+    esi::sii::BuildOptions options;
+    options.include_pdos = !no_pdo;
+    options.include_dc = !no_dc;
+    const esi::sii::BuildResult result = esi::sii::build_image(*info_of(*document, &device), device, options, input);
+    print(stderr, esi::sii::render_diagnostics_text(result.diagnostics));
+    if (!result.ok()) {
+        print(stderr, fmt::format("esi-sii build: no image written for {}\n", device_label(device)));
+        return exit_usage;
+    }
+    const std::string comment = fmt::format("{}, vendor 0x{:08X}", device_label(device), result.image.header.vendor_id);
+    const esi::Diagnostics written =
+        esi::write_file_atomically(output, esi::sii::format_image(result.bytes, format, "sii_eeprom", comment));
+    if (written.has_errors()) {
+        print(stderr, esi::sii::render_diagnostics_text(written));
+        return exit_usage;
+    }
+    return exit_clean;
+}
+
+int run_dump(const std::string& image_path, const std::string& format) {
+    if (format != "text" && format != "json") {
+        print(stderr, fmt::format("esi-sii dump: --format must be text or json (not '{}')\n", format));
+        return exit_usage;
+    }
+    const esi::sii::LoadedImage loaded = esi::sii::load_image_file(image_path);
+    if (!loaded.bytes) {
+        print(stderr, fmt::format("esi-sii dump: {}: {}\n", image_path, loaded.error));
+        return exit_usage;
+    }
+    const esi::sii::DecodedImage decoded = esi::sii::decode_image(*loaded.bytes);
+    print(stdout, format == "json" ? esi::sii::render_dump_json(decoded, image_path) : esi::sii::render_dump_text(decoded, image_path));
+    return decoded.has_errors() ? exit_findings : exit_clean;
+}
+
+int run_check(const std::string& esi_path, const std::string& image_path) {
+    const esi::sii::LoadedImage loaded = esi::sii::load_image_file(image_path);
+    if (!loaded.bytes) {
+        print(stderr, fmt::format("esi-sii check: {}: {}\n", image_path, loaded.error));
+        return exit_usage;
+    }
+    const std::optional<esi::EsiDocument> document = load_document(esi_path);
+    if (!document) return exit_usage;
+    const std::vector<const esi::Device*> all = esi::select_devices(*document, std::nullopt);
+    if (all.empty()) {
+        print(stderr, fmt::format("esi-sii check: {} describes no device\n", esi_path));
+        return exit_usage;
+    }
+    const esi::sii::DecodedImage decoded = esi::sii::decode_image(*loaded.bytes);
+    const esi::sii::ImageDevice match = esi::sii::find_device_for_image(*document, decoded.image.header);
+    if (!match.device) {
+        print(stdout, esi::sii::render_faults_text(decoded, image_path));
+        print(stdout, fmt::format("{}: product code 0x{:08X} (revision 0x{:08X}) is not in {}, which has:\n{}", image_path,
+                                  decoded.image.header.product_code, decoded.image.header.revision_no, esi_path, device_list(all)));
+        return exit_findings;
+    }
+    const esi::Diagnostics mismatches = esi::sii::check_image(*match.info, *match.device, decoded, esi_path, image_path);
+    print(stdout, esi::sii::render_check_text(decoded, image_path, mismatches, device_label(*match.device)));
+    return decoded.has_errors() || mismatches.has_errors() ? exit_findings : exit_clean;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"esi-sii: build, dump and check SII EEPROM images"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", std::string(esi::version()));
+
+    std::string build_input, build_output, build_device, build_format = "bin";
+    bool no_pdo = false, no_dc = false;
+    CLI::App* build = app.add_subcommand("build", "write the SII image of an ESI or YAML device");
+    build->add_option("input", build_input, "ESI.xml or SOURCE.yaml")->required();
+    build->add_option("-o,--output", build_output, "image file to write")->required();
+    build->add_option("--device", build_device, "PRODUCTCODE[:REVISION] (decimal, #x… or 0x…) when the file has several devices");
+    build->add_option("--format", build_format, "bin (default), hex (Intel HEX) or c (C array)");
+    build->add_flag("--no-pdo", no_pdo, "leave out the TxPDO/RxPDO categories");
+    build->add_flag("--no-dc", no_dc, "leave out the DC category");
+
+    std::string dump_image, dump_format = "text";
+    CLI::App* dump = app.add_subcommand("dump", "decode an image (binary or Intel HEX) and report its faults");
+    dump->add_option("image", dump_image, "IMAGE.bin or IMAGE.hex")->required();
+    dump->add_option("--format", dump_format, "text (default) or json");
+
+    std::string check_esi, check_image;
+    CLI::App* check = app.add_subcommand("check", "compare an image with its ESI device (ETG conformance ESI tests)");
+    check->add_option("esi", check_esi, "ESI.xml")->required();
+    check->add_option("image", check_image, "IMAGE.bin or IMAGE.hex")->required();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return exit_usage;
+    }
+    if (build->parsed()) return run_build(build_input, build_output, build_device, build_format, no_pdo, no_dc);
+    if (dump->parsed()) return run_dump(dump_image, dump_format);
+    if (check->parsed()) return run_check(check_esi, check_image);
+    return exit_usage;
+}

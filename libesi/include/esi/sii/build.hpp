@@ -1,0 +1,47 @@
+#pragma once
+// Device -> SII image (ETG.1000.6 / ETG.2010 as summarised in
+// shared/domain/prior-art-and-etg-facts.md §6; every choice where public tools disagree is in
+// docs/sii.md). What does not fit is a diagnostic, never a silent truncation: more than 255
+// strings, a string over 255 bytes, more than 255 entries in a PDO, a value too wide for its
+// field, an image larger than Eeprom/ByteSize. An error means the image must not be written;
+// the bytes are still returned so callers can inspect them.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "esi/diagnostic.hpp"
+#include "esi/model/ethercat_info.hpp"
+#include "esi/sii/image.hpp"
+
+namespace esi::sii {
+
+struct BuildOptions {
+    bool include_pdos = true;  // TxPDO/RxPDO categories (esi-sii --no-pdo)
+    bool include_dc = true;    // DC category (esi-sii --no-dc)
+    // Language of the names written as strings: this LcId when the ESI has it, else the usual
+    // primary name (English, else the name without LcId, else the first). Beckhoff's own
+    // images carry the German (1031) names.
+    std::uint32_t name_lcid = 1033;
+    // Fill the image with 0xFF (erased EEPROM) up to the EEPROM size, as every tool that wrote
+    // the corpus images does.
+    bool pad_to_eeprom_size = true;
+};
+
+struct BuildResult {
+    std::vector<std::uint8_t> bytes;  // the image; padded to the EEPROM size unless told not to
+    Image image;                      // what the bytes hold
+    bool from_eeprom_data = false;    // Eeprom/Data was used as it is
+    std::size_t content_bytes = 0;    // header + categories + end marker, before padding
+    std::uint64_t eeprom_bytes = 0;   // the EEPROM size the image declares in word 0x3E
+    Diagnostics diagnostics;          // path: the ESI (or YAML) the device came from
+
+    [[nodiscard]] bool ok() const { return !diagnostics.has_errors(); }
+};
+
+// `info` supplies Vendor/Id and the groups; `device` must be one of info.devices (or a device
+// built for it). `path` is used in diagnostics.
+[[nodiscard]] BuildResult build_image(const EtherCATInfo& info, const Device& device, const BuildOptions& options = {},
+                                      const std::string& path = {});
+
+}  // namespace esi::sii
