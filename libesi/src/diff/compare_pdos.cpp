@@ -71,8 +71,8 @@ void compare_entry_fields(Recorder& r, const std::string& p, const PdoEntry& a, 
     }
     r.value(ChangeKind::pdo_entry_attribute_changed, child(p, "DataType@DScale"), "DScale", a.data_type_dscale,
             b.data_type_dscale, ta, tb);
-    r.value(ChangeKind::pdo_entry_attribute_changed, child(p, "DataType@SwapData"), "SwapData", flag(a.data_type_swap_data),
-            flag(b.data_type_swap_data), ta, tb);
+    r.value(ChangeKind::pdo_entry_attribute_changed, child(p, "DataType@SwapData"), "SwapData", a.data_type_swap_data,
+            b.data_type_swap_data, ta, tb);
     r.value(ChangeKind::pdo_entry_attribute_changed, attr(p, "Fixed"), "Fixed", flag(a.fixed), flag(b.fixed), a.pos, b.pos);
     r.value(ChangeKind::pdo_entry_attribute_changed, child(p, "Index@DependOnSlot"), "Index@DependOnSlot",
             flag(a.index_depend_on_slot), flag(b.index_depend_on_slot), a.pos, b.pos);
