@@ -548,7 +548,7 @@ PdoEntry Reader::read_entry(const pugi::xml_node n) {
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
                 if (an == "DScale") e.data_type_dscale = a.value();
-                else if (an == "SwapData") e.data_type_swap_data = boolean(a, c);
+                else if (an == "SwapData") e.data_type_swap_data = std::string(trim(a.value()));
             }
         } else keep(e.extras, c, previous);
     });

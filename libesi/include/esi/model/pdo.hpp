@@ -19,7 +19,7 @@ struct PdoEntry {
     std::optional<std::string> comment;
     std::optional<std::string> data_type;  // as written (trimmed)
     std::optional<std::string> data_type_dscale;
-    std::optional<bool> data_type_swap_data;
+    std::optional<std::string> data_type_swap_data;  // Swap_HB_LB, Swap_HW_LW, Swap_HB_LB_HW_LW
     std::optional<bool> fixed;
     SourcePos pos;
     SourcePos bit_len_pos;
