@@ -339,3 +339,12 @@ TEST(YamlBadInput, MissingFileIsAnIoError) {
     ASSERT_EQ(s.diagnostics.size(), 1u);
     EXPECT_EQ(s.diagnostics.items()[0].rule, "io-error");
 }
+
+TEST(YamlBadInput, SwapDataIsTheSchemasEnumeration) {
+    const DeviceSource s = load_yaml(header + R"(    objects:
+      0x6000: { name: In, type: DINT, access: ro, pdo: tx }
+    txpdo:
+      - { index: 0x1A00, entries: [{ object: 0x6000, swap_data: Swap_HB_LW }] }
+)");
+    expect_error(s, "yaml-value", 12, 65, "did you mean 'Swap_HB_LB'?");
+}

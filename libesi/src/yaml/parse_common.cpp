@@ -405,7 +405,17 @@ std::optional<PdoEntry> SourceParser::pdo_entry(const Node& node, const ObjectNa
         e.data_type_pos = pos_of(*n);
     }
     r_.optional_text(*f, "dscale", e.data_type_dscale);
-    r_.optional_bool(*f, "swap_data", e.data_type_swap_data);
+    if (const Node* n = f->find("swap_data")) {
+        // ETG.2000: DataType@SwapData is one of Swap_HB_LB, Swap_HW_LW, Swap_HB_LB_HW_LW.
+        static constexpr std::string_view swaps[] = {"Swap_HB_LB", "Swap_HW_LW", "Swap_HB_LB_HW_LW"};
+        if (auto v = r_.text(*n, "swap_data")) {
+            if (std::find(std::begin(swaps), std::end(swaps), *v) == std::end(swaps))
+                r_.error(*n, "yaml-value",
+                         "'swap_data' is Swap_HB_LB, Swap_HW_LW or Swap_HB_LB_HW_LW, not '" + *v + "'" + did_you_mean(*v, swaps));
+            else
+                e.data_type_swap_data = *v;
+        }
+    }
     r_.optional_bool(*f, "fixed", e.fixed);
     r_.optional_bool(*f, "index_depend_on_slot", e.index_depend_on_slot);
     r_.optional_bool(*f, "index_depend_on_slot_group", e.index_depend_on_slot_group);
