@@ -1138,12 +1138,21 @@ std::optional<std::string> read_file_bytes(const std::filesystem::path& path, st
         error = std::error_code(errno, std::generic_category()).message();
         return std::nullopt;
     }
+    // A regular file is read into a buffer of its size in one call: growing the string chunk by
+    // chunk copied a multi-MB file several times over and left up to twice its size allocated.
+    // Whatever the size did not cover (a file that grew, a pipe) is appended in chunks.
     std::string bytes;
+    std::error_code size_error;
+    const std::uintmax_t size = std::filesystem::file_size(path, size_error);
+    if (!size_error && size < std::numeric_limits<std::size_t>::max()) {
+        bytes.resize(static_cast<std::size_t>(size));
+        bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
+    }
     char buffer[1 << 16];
-    for (;;) {
+    for (bool more = bytes.size() == size || size_error; more;) {
         const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
         bytes.append(buffer, n);
-        if (n < sizeof buffer) break;
+        more = n == sizeof buffer;
     }
     const bool failed = std::ferror(file) != 0;
     std::fclose(file);
