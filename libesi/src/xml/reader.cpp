@@ -42,32 +42,47 @@ private:
     // ---- scalar values -------------------------------------------------------------------
     static std::string text_of(const pugi::xml_node node) { return std::string(trim(node.text().get())); }
 
-    std::optional<Number> number(std::string_view text, std::string_view what, SourcePos pos) {
+    // Where a scalar was read from: named ("Sm@StartAddress", or the element's name) and located
+    // only when the value is bad. Building that name and position for every number used to cost
+    // a string allocation and a position lookup per attribute, most of them thrown away.
+    struct ValueSite {
+        pugi::xml_node element;
+        pugi::xml_attribute attribute = {};
+        std::string_view label = {};  // used instead of the element/attribute names when set
+    };
+    static std::string describe(const ValueSite& site) {
+        if (!site.label.empty()) return std::string(site.label);
+        if (site.attribute) return std::string(site.element.name()) + "@" + site.attribute.name();
+        return site.element.name();
+    }
+
+    std::optional<Number> number(std::string_view text, const ValueSite& site) {
         const ParsedNumber parsed = parse_number(text);
         if (!parsed.ok()) {
             report(Severity::error, "xml-number-format",
-                   std::string(what) + ": '" + std::string(trim(text)) + "' is not a number (" + std::string(to_string(parsed.error)) +
+                   describe(site) + ": '" + std::string(trim(text)) + "' is not a number (" + std::string(to_string(parsed.error)) +
                        "); ESI numbers are decimal or #x hex",
-                   pos);
+                   pos_of(site.element));
             return std::nullopt;
         }
         if (parsed.syntax == NumberSyntax::c_hex) {
             report(Severity::warning, "xml-hex-prefix",
-                   std::string(what) + ": '" + std::string(trim(text)) + "' uses the C prefix 0x; ESI hex numbers are written #x",
-                   pos);
+                   describe(site) + ": '" + std::string(trim(text)) + "' uses the C prefix 0x; ESI hex numbers are written #x",
+                   pos_of(site.element));
         }
         return parsed.value;
     }
+    std::optional<Number> number(const pugi::xml_node n) { return number(n.text().get(), ValueSite{n}); }
 
     template <class T>
-    std::optional<T> integer(std::string_view text, std::string_view what, SourcePos pos) {
-        const std::optional<Number> n = number(text, what, pos);
+    std::optional<T> integer(std::string_view text, const ValueSite& site) {
+        const std::optional<Number> n = number(text, site);
         if (!n) return std::nullopt;
         if constexpr (std::is_signed_v<T>) {
             const auto v = n->as_int64();
             if (!v || *v < std::numeric_limits<T>::min() || *v > std::numeric_limits<T>::max()) {
-                report(Severity::error, "xml-number-range",
-                       std::string(what) + ": " + format_decimal(*n) + " is out of range", pos);
+                report(Severity::error, "xml-number-range", describe(site) + ": " + format_decimal(*n) + " is out of range",
+                       pos_of(site.element));
                 return std::nullopt;
             }
             return static_cast<T>(*v);
@@ -75,9 +90,9 @@ private:
             const auto v = n->as_uint64();
             if (!v || *v > std::numeric_limits<T>::max()) {
                 report(Severity::error, "xml-number-range",
-                       std::string(what) + ": " + format_decimal(*n) + " is out of range (0.." +
+                       describe(site) + ": " + format_decimal(*n) + " is out of range (0.." +
                            std::to_string(std::numeric_limits<T>::max()) + ")",
-                       pos);
+                       pos_of(site.element));
                 return std::nullopt;
             }
             return static_cast<T>(*v);
@@ -85,27 +100,25 @@ private:
     }
 
     std::optional<std::uint32_t> u32(const pugi::xml_attribute a, const pugi::xml_node owner) {
-        return integer<std::uint32_t>(a.value(), std::string(owner.name()) + "@" + a.name(), pos_of(owner));
+        return integer<std::uint32_t>(a.value(), ValueSite{owner, a});
     }
     std::optional<std::int32_t> i32(const pugi::xml_attribute a, const pugi::xml_node owner) {
-        return integer<std::int32_t>(a.value(), std::string(owner.name()) + "@" + a.name(), pos_of(owner));
+        return integer<std::int32_t>(a.value(), ValueSite{owner, a});
     }
-    std::optional<std::uint32_t> u32(const pugi::xml_node n) { return integer<std::uint32_t>(n.text().get(), n.name(), pos_of(n)); }
-    std::optional<std::int32_t> i32(const pugi::xml_node n) { return integer<std::int32_t>(n.text().get(), n.name(), pos_of(n)); }
-    std::optional<std::int64_t> i64(const pugi::xml_node n) { return integer<std::int64_t>(n.text().get(), n.name(), pos_of(n)); }
-    std::optional<std::uint64_t> u64(const pugi::xml_node n) { return integer<std::uint64_t>(n.text().get(), n.name(), pos_of(n)); }
+    std::optional<std::uint32_t> u32(const pugi::xml_node n) { return integer<std::uint32_t>(n.text().get(), ValueSite{n}); }
+    std::optional<std::int32_t> i32(const pugi::xml_node n) { return integer<std::int32_t>(n.text().get(), ValueSite{n}); }
+    std::optional<std::int64_t> i64(const pugi::xml_node n) { return integer<std::int64_t>(n.text().get(), ValueSite{n}); }
+    std::optional<std::uint64_t> u64(const pugi::xml_node n) { return integer<std::uint64_t>(n.text().get(), ValueSite{n}); }
 
-    std::optional<bool> boolean(std::string_view text, std::string_view what, SourcePos pos) {
+    std::optional<bool> boolean(std::string_view text, const ValueSite& site) {
         const auto b = parse_boolean(text);
         if (!b)
             report(Severity::error, "xml-boolean-format",
-                   std::string(what) + ": '" + std::string(trim(text)) + "' is not a boolean (true, false, 1 or 0)", pos);
+                   describe(site) + ": '" + std::string(trim(text)) + "' is not a boolean (true, false, 1 or 0)", pos_of(site.element));
         return b;
     }
-    std::optional<bool> boolean(const pugi::xml_attribute a, const pugi::xml_node owner) {
-        return boolean(a.value(), std::string(owner.name()) + "@" + a.name(), pos_of(owner));
-    }
-    std::optional<bool> boolean(const pugi::xml_node n) { return boolean(n.text().get(), n.name(), pos_of(n)); }
+    std::optional<bool> boolean(const pugi::xml_attribute a, const pugi::xml_node owner) { return boolean(a.value(), ValueSite{owner, a}); }
+    std::optional<bool> boolean(const pugi::xml_node n) { return boolean(n.text().get(), ValueSite{n}); }
 
     HexData hex(const pugi::xml_node n) {
         HexData out;
@@ -126,7 +139,7 @@ private:
         t.text = text_of(n);
         t.pos = pos_of(n);
         for (const auto a : n.attributes()) {
-            if (std::string_view(a.name()) == "LcId") t.lcid = integer<std::uint32_t>(a.value(), "LcId", t.pos);
+            if (std::string_view(a.name()) == "LcId") t.lcid = integer<std::uint32_t>(a.value(), ValueSite{n, a, "LcId"});
         }
         return t;
     }
@@ -841,7 +854,7 @@ DataType Reader::read_data_type(const pugi::xml_node n) {
             ev.pos = pos_of(c);
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view) {
                 if (cn == "Text") ev.texts.push_back(localized(cc));
-                else if (cn == "Enum") ev.value = number(cc.text().get(), "Enum", pos_of(cc)).value_or(Number{});
+                else if (cn == "Enum") ev.value = number(cc).value_or(Number{});
                 else if (cn == "Comment") ev.comments.push_back(localized(cc));
             });
             t.enums.push_back(std::move(ev));
@@ -864,9 +877,9 @@ DataTypeSubItem Reader::read_type_sub_item(const pugi::xml_node n) {
         else if (name == "BitOffs") s.bit_offset = u64(c).value_or(0);
         else if (name == "DefaultString") s.default_string = c.text().get();
         else if (name == "DefaultData") s.default_data = hex(c);
-        else if (name == "MinValue") s.min_value = number(c.text().get(), "MinValue", pos_of(c));
-        else if (name == "MaxValue") s.max_value = number(c.text().get(), "MaxValue", pos_of(c));
-        else if (name == "DefaultValue") s.default_value = number(c.text().get(), "DefaultValue", pos_of(c));
+        else if (name == "MinValue") s.min_value = number(c);
+        else if (name == "MaxValue") s.max_value = number(c);
+        else if (name == "DefaultValue") s.default_value = number(c);
         else if (name == "Flags") s.flags = read_flags(c);
         else keep(s.extras, c, previous);
     });
@@ -907,9 +920,9 @@ ObjectInfo Reader::read_object_info(const pugi::xml_node n, std::size_t depth) {
         else if (name == "MinData") info.min_data = hex(c);
         else if (name == "MaxData") info.max_data = hex(c);
         else if (name == "DefaultData") info.default_data = hex(c);
-        else if (name == "MinValue") info.min_value = number(c.text().get(), "MinValue", pos_of(c));
-        else if (name == "MaxValue") info.max_value = number(c.text().get(), "MaxValue", pos_of(c));
-        else if (name == "DefaultValue") info.default_value = number(c.text().get(), "DefaultValue", pos_of(c));
+        else if (name == "MinValue") info.min_value = number(c);
+        else if (name == "MaxValue") info.max_value = number(c);
+        else if (name == "DefaultValue") info.default_value = number(c);
         else if (name == "DisplayName") info.display_name = text_of(c);
         else if (name == "Unit") info.unit = u32(c);
         else if (name == "SubItem" && depth < 8) {
