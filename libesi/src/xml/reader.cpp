@@ -145,10 +145,9 @@ private:
     }
 
     // ---- verbatim store ------------------------------------------------------------------
-    XmlElement verbatim(const pugi::xml_node n, std::string after, std::size_t depth) {
-        XmlElement e;
+    void verbatim(XmlElement& e, const pugi::xml_node n, std::string_view after, std::size_t depth) {
         e.name = n.name();
-        e.after = std::move(after);
+        e.after = after;
         e.pos = pos_of(n);
         for (const auto a : n.attributes()) e.attributes.push_back({a.name(), a.value()});
         if (depth >= options_.max_verbatim_depth) {
@@ -158,25 +157,24 @@ private:
                        e.pos);
                 depth_reported_ = true;
             }
-            return e;
+            return;
         }
-        std::string previous;
+        std::string_view previous;
         for (const auto c : n.children()) {
             if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) {
                 e.text += c.value();
             } else if (c.type() == pugi::node_element) {
-                e.children.push_back(verbatim(c, previous, depth + 1));
+                verbatim(e.children.emplace_back(), c, previous, depth + 1);
                 previous = c.name();
             }
         }
         // parse_embed_pcdata stores the text that comes before any child element in the
         // element's own value, not as a child: it is the start of the text (mixed content).
         if (n.value()[0] != '\0') e.text.insert(0, n.value());
-        return e;
     }
 
     void keep(Extras& extras, const pugi::xml_node n, std::string_view after) {
-        extras.elements.push_back(verbatim(n, std::string(after), 1));
+        verbatim(extras.elements.emplace_back(), n, after, 1);
     }
     static void keep(Extras& extras, const pugi::xml_attribute a) { extras.attributes.push_back({a.name(), a.value()}); }
 
@@ -191,38 +189,48 @@ private:
         }
     }
 
+    // Reserves room for the children named `name` about to be read into `items`: large model
+    // elements (an Object is about 1 KB) are then neither moved while the vector grows nor
+    // left with up to half of its capacity unused.
+    template <class T>
+    static void reserve_for(std::vector<T>& items, const pugi::xml_node n, const char* name) {
+        std::size_t count = 0;
+        for (pugi::xml_node c = n.child(name); c; c = c.next_sibling(name)) ++count;
+        items.reserve(items.size() + count);
+    }
+
     void missing(std::string_view parent, std::string_view child, SourcePos pos) {
         report(Severity::error, "xml-missing-element", std::string(parent) + " has no " + std::string(child) + " element", pos);
     }
 
     // ---- model elements ------------------------------------------------------------------
-    EtherCATInfo read_info(const pugi::xml_node n);
-    Vendor read_vendor(const pugi::xml_node n);
-    Group read_group(const pugi::xml_node n);
-    Device read_device(const pugi::xml_node n);
-    DeviceIdentity read_identity(const pugi::xml_node n);
-    SyncManager read_sm(const pugi::xml_node n);
-    Fmmu read_fmmu(const pugi::xml_node n);
-    SyncUnit read_su(const pugi::xml_node n);
-    Pdo read_pdo(const pugi::xml_node n, PdoDirection direction);
-    PdoEntry read_entry(const pugi::xml_node n);
-    Mailbox read_mailbox(const pugi::xml_node n);
-    InitCmd read_init_cmd(const pugi::xml_node n);
-    CoeProtocol read_coe(const pugi::xml_node n);
-    Dc read_dc(const pugi::xml_node n);
-    DcOpMode read_op_mode(const pugi::xml_node n);
+    void read_info(EtherCATInfo& out, const pugi::xml_node n);
+    void read_vendor(Vendor& out, const pugi::xml_node n);
+    void read_group(Group& out, const pugi::xml_node n);
+    void read_device(Device& out, const pugi::xml_node n);
+    void read_identity(DeviceIdentity& out, const pugi::xml_node n);
+    void read_sm(SyncManager& out, const pugi::xml_node n);
+    void read_fmmu(Fmmu& out, const pugi::xml_node n);
+    void read_su(SyncUnit& out, const pugi::xml_node n);
+    void read_pdo(Pdo& out, const pugi::xml_node n, PdoDirection direction);
+    void read_entry(PdoEntry& out, const pugi::xml_node n);
+    void read_mailbox(Mailbox& out, const pugi::xml_node n);
+    void read_init_cmd(InitCmd& out, const pugi::xml_node n);
+    void read_coe(CoeProtocol& out, const pugi::xml_node n);
+    void read_dc(Dc& out, const pugi::xml_node n);
+    void read_op_mode(DcOpMode& out, const pugi::xml_node n);
     DcTime read_dc_time(const pugi::xml_node n);
-    Eeprom read_eeprom(const pugi::xml_node n);
-    Profile read_profile(const pugi::xml_node n);
-    Dictionary read_dictionary(const pugi::xml_node n);
-    DataType read_data_type(const pugi::xml_node n);
-    DataTypeSubItem read_type_sub_item(const pugi::xml_node n);
-    Object read_object(const pugi::xml_node n);
-    ObjectInfo read_object_info(const pugi::xml_node n, std::size_t depth);
-    ObjectFlags read_flags(const pugi::xml_node n);
-    Module read_module(const pugi::xml_node n);
-    Slots read_slots(const pugi::xml_node n);
-    Slot read_slot(const pugi::xml_node n);
+    void read_eeprom(Eeprom& out, const pugi::xml_node n);
+    void read_profile(Profile& out, const pugi::xml_node n);
+    void read_dictionary(Dictionary& out, const pugi::xml_node n);
+    void read_data_type(DataType& out, const pugi::xml_node n);
+    void read_type_sub_item(DataTypeSubItem& out, const pugi::xml_node n);
+    void read_object(Object& out, const pugi::xml_node n);
+    void read_object_info(ObjectInfo& out, const pugi::xml_node n, std::size_t depth);
+    void read_flags(ObjectFlags& out, const pugi::xml_node n);
+    void read_module(Module& out, const pugi::xml_node n);
+    void read_slots(Slots& out, const pugi::xml_node n);
+    void read_slot(Slot& out, const pugi::xml_node n);
     bool read_image(Images& images, const pugi::xml_node c, std::string_view name);
 
     const SourceText& source_;
@@ -248,15 +256,15 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
     const std::string_view name = root.name();
     if (name == "EtherCATInfo") {
         doc.kind = DocumentKind::ethercat_info;
-        doc.infos.push_back(read_info(root));
+        read_info(doc.infos.emplace_back(), root);
     } else if (name == "EtherCATModule") {
         doc.kind = DocumentKind::ethercat_module;
-        doc.infos.push_back(read_info(root));
+        read_info(doc.infos.emplace_back(), root);
     } else if (name == "EtherCATInfoList") {
         doc.kind = DocumentKind::ethercat_info_list;
         for (const auto a : root.attributes()) keep(doc.root_extras, a);
         for_children(root, [&](const pugi::xml_node c, std::string_view n, std::string_view previous) {
-            if (n == "EtherCATInfo") doc.infos.push_back(read_info(c));
+            if (n == "EtherCATInfo") read_info(doc.infos.emplace_back(), c);
             else keep(doc.root_extras, c, previous);
         });
     } else if (name == "EtherCATDict") {
@@ -266,7 +274,7 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
             else keep(doc.root_extras, a);
         }
         for_children(root, [&](const pugi::xml_node c, std::string_view n, std::string_view previous) {
-            if (n == "Dictionary" && !doc.dictionary) doc.dictionary = read_dictionary(c);
+            if (n == "Dictionary" && !doc.dictionary) read_dictionary(doc.dictionary.emplace(), c);
             else keep(doc.root_extras, c, previous);
         });
     } else {
@@ -279,8 +287,7 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
     return doc;
 }
 
-EtherCATInfo Reader::read_info(const pugi::xml_node n) {
-    EtherCATInfo info;
+void Reader::read_info(EtherCATInfo& info, const pugi::xml_node n) {
     info.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         if (std::string_view(a.name()) == "Version") info.version = a.value();
@@ -288,7 +295,7 @@ EtherCATInfo Reader::read_info(const pugi::xml_node n) {
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "Vendor") {
-            info.vendor = read_vendor(c);
+            read_vendor(info.vendor.emplace(), c);
         } else if (name == "Descriptions") {
             info.has_descriptions = true;
             info.descriptions_pos = pos_of(c);
@@ -296,16 +303,17 @@ EtherCATInfo Reader::read_info(const pugi::xml_node n) {
             for_children(c, [&](const pugi::xml_node d, std::string_view dn, std::string_view dprev) {
                 if (dn == "Groups") {
                     for_children(d, [&](const pugi::xml_node g, std::string_view gn, std::string_view) {
-                        if (gn == "Group") info.groups.push_back(read_group(g));
+                        if (gn == "Group") read_group(info.groups.emplace_back(), g);
                     });
                 } else if (dn == "Devices") {
+                    reserve_for(info.devices, d, "Device");
                     for_children(d, [&](const pugi::xml_node dev, std::string_view devn, std::string_view) {
-                        if (devn == "Device") info.devices.push_back(read_device(dev));
+                        if (devn == "Device") read_device(info.devices.emplace_back(), dev);
                     });
                 } else if (dn == "Modules") {
                     info.has_modules = true;
                     for_children(d, [&](const pugi::xml_node m, std::string_view mn, std::string_view) {
-                        if (mn == "Module") info.modules.push_back(read_module(m));
+                        if (mn == "Module") read_module(info.modules.emplace_back(), m);
                     });
                 } else {
                     keep(info.descriptions_extras, d, dprev);
@@ -314,17 +322,15 @@ EtherCATInfo Reader::read_info(const pugi::xml_node n) {
         } else if (name == "Modules") {  // EtherCATModule root
             info.has_modules = true;
             for_children(c, [&](const pugi::xml_node m, std::string_view mn, std::string_view) {
-                if (mn == "Module") info.modules.push_back(read_module(m));
+                if (mn == "Module") read_module(info.modules.emplace_back(), m);
             });
         } else {
             keep(info.extras, c, previous);
         }
     });
-    return info;
 }
 
-Vendor Reader::read_vendor(const pugi::xml_node n) {
-    Vendor v;
+void Reader::read_vendor(Vendor& v, const pugi::xml_node n) {
     v.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -342,11 +348,9 @@ Vendor Reader::read_vendor(const pugi::xml_node n) {
         else if (name == "DescriptionURL") v.description_url = text_of(c);
         else if (!read_image(v.images, c, name)) keep(v.extras, c, previous);
     });
-    return v;
 }
 
-Group Reader::read_group(const pugi::xml_node n) {
-    Group g;
+void Reader::read_group(Group& g, const pugi::xml_node n) {
     g.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -362,11 +366,9 @@ Group Reader::read_group(const pugi::xml_node n) {
         else if (name == "Comment") g.comments.push_back(localized(c));
         else if (!read_image(g.images, c, name)) keep(g.extras, c, previous);
     });
-    return g;
 }
 
-DeviceIdentity Reader::read_identity(const pugi::xml_node n) {
-    DeviceIdentity t;
+void Reader::read_identity(DeviceIdentity& t, const pugi::xml_node n) {
     t.pos = pos_of(n);
     t.text = text_of(n);
     for (const auto a : n.attributes()) {
@@ -378,11 +380,9 @@ DeviceIdentity Reader::read_identity(const pugi::xml_node n) {
         else keep(t.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(t.extras, c, previous); });
-    return t;
 }
 
-Device Reader::read_device(const pugi::xml_node n) {
-    Device d;
+void Reader::read_device(Device& d, const pugi::xml_node n) {
     d.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -393,7 +393,8 @@ Device Reader::read_device(const pugi::xml_node n) {
     bool has_type = false;
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "Type") {
-            d.type = read_identity(c);
+            if (has_type) d.type = {};  // a repeated Type replaces the first
+            read_identity(d.type, c);
             has_type = true;
         } else if (name == "Name") d.names.push_back(localized(c));
         else if (name == "Comment") d.comments.push_back(localized(c));
@@ -401,24 +402,22 @@ Device Reader::read_device(const pugi::xml_node n) {
         else if (name == "GroupType") {
             d.group_type = text_of(c);
             d.group_type_pos = pos_of(c);
-        } else if (name == "Profile") d.profiles.push_back(read_profile(c));
-        else if (name == "Fmmu") d.fmmus.push_back(read_fmmu(c));
-        else if (name == "Sm") d.sms.push_back(read_sm(c));
-        else if (name == "Su") d.sus.push_back(read_su(c));
-        else if (name == "RxPdo") d.rx_pdos.push_back(read_pdo(c, PdoDirection::rx));
-        else if (name == "TxPdo") d.tx_pdos.push_back(read_pdo(c, PdoDirection::tx));
-        else if (name == "Mailbox") d.mailbox = read_mailbox(c);
-        else if (name == "Dc") d.dc = read_dc(c);
-        else if (name == "Slots") d.slots = read_slots(c);
-        else if (name == "Eeprom") d.eeprom = read_eeprom(c);
+        } else if (name == "Profile") read_profile(d.profiles.emplace_back(), c);
+        else if (name == "Fmmu") read_fmmu(d.fmmus.emplace_back(), c);
+        else if (name == "Sm") read_sm(d.sms.emplace_back(), c);
+        else if (name == "Su") read_su(d.sus.emplace_back(), c);
+        else if (name == "RxPdo") read_pdo(d.rx_pdos.emplace_back(), c, PdoDirection::rx);
+        else if (name == "TxPdo") read_pdo(d.tx_pdos.emplace_back(), c, PdoDirection::tx);
+        else if (name == "Mailbox") read_mailbox(d.mailbox.emplace(), c);
+        else if (name == "Dc") read_dc(d.dc.emplace(), c);
+        else if (name == "Slots") read_slots(d.slots.emplace(), c);
+        else if (name == "Eeprom") read_eeprom(d.eeprom.emplace(), c);
         else if (!read_image(d.images, c, name)) keep(d.extras, c, previous);
     });
     if (!has_type) missing("Device", "Type", d.pos);
-    return d;
 }
 
-SyncManager Reader::read_sm(const pugi::xml_node n) {
-    SyncManager sm;
+void Reader::read_sm(SyncManager& sm, const pugi::xml_node n) {
     sm.pos = pos_of(n);
     sm.type = text_of(n);
     for (const auto a : n.attributes()) {
@@ -437,11 +436,9 @@ SyncManager Reader::read_sm(const pugi::xml_node n) {
         else keep(sm.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(sm.extras, c, previous); });
-    return sm;
 }
 
-Fmmu Reader::read_fmmu(const pugi::xml_node n) {
-    Fmmu f;
+void Reader::read_fmmu(Fmmu& f, const pugi::xml_node n) {
     f.pos = pos_of(n);
     f.type = text_of(n);
     for (const auto a : n.attributes()) {
@@ -452,11 +449,9 @@ Fmmu Reader::read_fmmu(const pugi::xml_node n) {
         else keep(f.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(f.extras, c, previous); });
-    return f;
 }
 
-SyncUnit Reader::read_su(const pugi::xml_node n) {
-    SyncUnit s;
+void Reader::read_su(SyncUnit& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
     s.text = text_of(n);
     for (const auto a : n.attributes()) {
@@ -468,11 +463,9 @@ SyncUnit Reader::read_su(const pugi::xml_node n) {
         else keep(s.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(s.extras, c, previous); });
-    return s;
 }
 
-Pdo Reader::read_pdo(const pugi::xml_node n, PdoDirection direction) {
-    Pdo p;
+void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
     p.direction = direction;
     p.pos = pos_of(n);
     for (const auto a : n.attributes()) {
@@ -493,6 +486,8 @@ Pdo Reader::read_pdo(const pugi::xml_node n, PdoDirection direction) {
         else if (an == "SafetyConnNumber") p.safety_conn_number = i32(a, n);
         else keep(p.extras, a);
     }
+    reserve_for(p.entries, n, "Entry");
+    reserve_for(p.excludes, n, "Exclude");
     bool has_index = false;
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "Index") {
@@ -517,17 +512,15 @@ Pdo Reader::read_pdo(const pugi::xml_node n, PdoDirection direction) {
                 else if (an == "DependOnSlotGroup") e.depend_on_slot_group = boolean(a, c);
             }
             p.excludes.push_back(e);
-        } else if (name == "Entry") p.entries.push_back(read_entry(c));
+        } else if (name == "Entry") read_entry(p.entries.emplace_back(), c);
         else if (name == "ExcludedSm") {
             if (auto v = u32(c)) p.excluded_sms.push_back(*v);
         } else keep(p.extras, c, previous);
     });
     if (!has_index) missing(n.name(), "Index", p.pos);
-    return p;
 }
 
-PdoEntry Reader::read_entry(const pugi::xml_node n) {
-    PdoEntry e;
+void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
     e.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -567,11 +560,9 @@ PdoEntry Reader::read_entry(const pugi::xml_node n) {
     });
     if (!has_index) missing("Entry", "Index", e.pos);
     if (!has_bit_len) missing("Entry", "BitLen", e.pos);
-    return e;
 }
 
-InitCmd Reader::read_init_cmd(const pugi::xml_node n) {
-    InitCmd cmd;
+void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
     cmd.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -601,11 +592,9 @@ InitCmd Reader::read_init_cmd(const pugi::xml_node n) {
         } else if (name == "Comment") cmd.comment = text_of(c);
         else keep(cmd.extras, c, previous);
     });
-    return cmd;
 }
 
-CoeProtocol Reader::read_coe(const pugi::xml_node n) {
-    CoeProtocol coe;
+void Reader::read_coe(CoeProtocol& coe, const pugi::xml_node n) {
     coe.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -623,15 +612,14 @@ CoeProtocol Reader::read_coe(const pugi::xml_node n) {
         else if (an == "DS402Channels") coe.ds402_channels = i32(a, n);
         else keep(coe.extras, a);
     }
+    reserve_for(coe.init_cmds, n, "InitCmd");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "InitCmd") coe.init_cmds.push_back(read_init_cmd(c));
+        if (name == "InitCmd") read_init_cmd(coe.init_cmds.emplace_back(), c);
         else keep(coe.extras, c, previous);
     });
-    return coe;
 }
 
-Mailbox Reader::read_mailbox(const pugi::xml_node n) {
-    Mailbox m;
+void Reader::read_mailbox(Mailbox& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -641,7 +629,7 @@ Mailbox Reader::read_mailbox(const pugi::xml_node n) {
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "CoE") {
-            m.coe = read_coe(c);
+            read_coe(m.coe.emplace(), c);
         } else if (name == "EoE") {
             EoeProtocol eoe;
             eoe.pos = pos_of(c);
@@ -653,7 +641,7 @@ Mailbox Reader::read_mailbox(const pugi::xml_node n) {
                 else keep(eoe.extras, a);
             }
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "InitCmd") eoe.init_cmds.push_back(read_init_cmd(cc));
+                if (cn == "InitCmd") read_init_cmd(eoe.init_cmds.emplace_back(), cc);
                 else keep(eoe.extras, cc, prev);
             });
             m.eoe = std::move(eoe);
@@ -667,7 +655,7 @@ Mailbox Reader::read_mailbox(const pugi::xml_node n) {
                 else keep(soe.extras, a);
             }
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "InitCmd") soe.init_cmds.push_back(read_init_cmd(cc));
+                if (cn == "InitCmd") read_init_cmd(soe.init_cmds.emplace_back(), cc);
                 else keep(soe.extras, cc, prev);
             });
             m.soe = std::move(soe);
@@ -682,7 +670,7 @@ Mailbox Reader::read_mailbox(const pugi::xml_node n) {
                 else keep(aoe.extras, a);
             }
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "InitCmd") aoe.init_cmds.push_back(read_init_cmd(cc));
+                if (cn == "InitCmd") read_init_cmd(aoe.init_cmds.emplace_back(), cc);
                 else keep(aoe.extras, cc, prev);
             });
             m.aoe = std::move(aoe);
@@ -696,7 +684,6 @@ Mailbox Reader::read_mailbox(const pugi::xml_node n) {
             keep(m.extras, c, previous);
         }
     });
-    return m;
 }
 
 DcTime Reader::read_dc_time(const pugi::xml_node n) {
@@ -713,8 +700,7 @@ DcTime Reader::read_dc_time(const pugi::xml_node n) {
     return t;
 }
 
-DcOpMode Reader::read_op_mode(const pugi::xml_node n) {
-    DcOpMode m;
+void Reader::read_op_mode(DcOpMode& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(m.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
@@ -732,11 +718,9 @@ DcOpMode Reader::read_op_mode(const pugi::xml_node n) {
         else if (name == "ShiftTimeSync1") m.shift_time_sync1 = read_dc_time(c);
         else keep(m.extras, c, previous);
     });
-    return m;
 }
 
-Dc Reader::read_dc(const pugi::xml_node n) {
-    Dc dc;
+void Reader::read_dc(Dc& dc, const pugi::xml_node n) {
     dc.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -748,14 +732,12 @@ Dc Reader::read_dc(const pugi::xml_node n) {
         else keep(dc.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "OpMode") dc.op_modes.push_back(read_op_mode(c));
+        if (name == "OpMode") read_op_mode(dc.op_modes.emplace_back(), c);
         else keep(dc.extras, c, previous);
     });
-    return dc;
 }
 
-Eeprom Reader::read_eeprom(const pugi::xml_node n) {
-    Eeprom e;
+void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
     e.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         if (std::string_view(a.name()) == "AssignToPdi") e.assign_to_pdi = boolean(a, n);
@@ -788,11 +770,9 @@ Eeprom Reader::read_eeprom(const pugi::xml_node n) {
             e.categories.push_back(std::move(cat));
         } else keep(e.extras, c, previous);
     });
-    return e;
 }
 
-Profile Reader::read_profile(const pugi::xml_node n) {
-    Profile p;
+void Reader::read_profile(Profile& p, const pugi::xml_node n) {
     p.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         if (std::string_view(a.name()) == "Channel") p.channel = i32(a, n);
@@ -802,36 +782,35 @@ Profile Reader::read_profile(const pugi::xml_node n) {
         if (name == "ProfileNo") p.profile_no = i32(c);
         else if (name == "AddInfo") p.add_info = i32(c);
         else if (name == "DictionaryFile") p.dictionary_file = text_of(c);
-        else if (name == "Dictionary") p.dictionary = read_dictionary(c);
+        else if (name == "Dictionary") read_dictionary(p.dictionary.emplace(), c);
         else keep(p.extras, c, previous);
     });
-    return p;
 }
 
-Dictionary Reader::read_dictionary(const pugi::xml_node n) {
-    Dictionary d;
+void Reader::read_dictionary(Dictionary& d, const pugi::xml_node n) {
     d.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(d.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "DataTypes") {
+            reserve_for(d.data_types, c, "DataType");
             for_children(c, [&](const pugi::xml_node t, std::string_view tn, std::string_view) {
-                if (tn == "DataType") d.data_types.push_back(read_data_type(t));
+                if (tn == "DataType") read_data_type(d.data_types.emplace_back(), t);
             });
         } else if (name == "Objects") {
+            reserve_for(d.objects, c, "Object");
             for_children(c, [&](const pugi::xml_node o, std::string_view on, std::string_view) {
-                if (on == "Object") d.objects.push_back(read_object(o));
+                if (on == "Object") read_object(d.objects.emplace_back(), o);
             });
         } else {
             keep(d.extras, c, previous);
         }
     });
-    return d;
 }
 
-DataType Reader::read_data_type(const pugi::xml_node n) {
-    DataType t;
+void Reader::read_data_type(DataType& t, const pugi::xml_node n) {
     t.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(t.extras, a);
+    reserve_for(t.sub_items, n, "SubItem");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "Index") t.index = u32(c);
         else if (name == "Name") {
@@ -848,7 +827,7 @@ DataType Reader::read_data_type(const pugi::xml_node n) {
                 else if (cn == "Elements") ai.elements = i64(cc).value_or(0);
             });
             t.array_info.push_back(ai);
-        } else if (name == "SubItem") t.sub_items.push_back(read_type_sub_item(c));
+        } else if (name == "SubItem") read_type_sub_item(t.sub_items.emplace_back(), c);
         else if (name == "EnumInfo") {
             EnumValue ev;
             ev.pos = pos_of(c);
@@ -860,11 +839,9 @@ DataType Reader::read_data_type(const pugi::xml_node n) {
             t.enums.push_back(std::move(ev));
         } else keep(t.extras, c, previous);
     });
-    return t;
 }
 
-DataTypeSubItem Reader::read_type_sub_item(const pugi::xml_node n) {
-    DataTypeSubItem s;
+void Reader::read_type_sub_item(DataTypeSubItem& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(s.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
@@ -880,14 +857,12 @@ DataTypeSubItem Reader::read_type_sub_item(const pugi::xml_node n) {
         else if (name == "MinValue") s.min_value = number(c);
         else if (name == "MaxValue") s.max_value = number(c);
         else if (name == "DefaultValue") s.default_value = number(c);
-        else if (name == "Flags") s.flags = read_flags(c);
+        else if (name == "Flags") read_flags(s.flags.emplace(), c);
         else keep(s.extras, c, previous);
     });
-    return s;
 }
 
-ObjectFlags Reader::read_flags(const pugi::xml_node n) {
-    ObjectFlags f;
+void Reader::read_flags(ObjectFlags& f, const pugi::xml_node n) {
     f.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(f.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
@@ -908,13 +883,12 @@ ObjectFlags Reader::read_flags(const pugi::xml_node n) {
         else if (name == "Setting") f.setting = i32(c);
         else keep(f.extras, c, previous);
     });
-    return f;
 }
 
-ObjectInfo Reader::read_object_info(const pugi::xml_node n, std::size_t depth) {
-    ObjectInfo info;
+void Reader::read_object_info(ObjectInfo& info, const pugi::xml_node n, std::size_t depth) {
     info.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(info.extras, a);
+    if (depth < 8) reserve_for(info.sub_items, n, "SubItem");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "DefaultString") info.default_string = c.text().get();
         else if (name == "MinData") info.min_data = hex(c);
@@ -926,21 +900,22 @@ ObjectInfo Reader::read_object_info(const pugi::xml_node n, std::size_t depth) {
         else if (name == "DisplayName") info.display_name = text_of(c);
         else if (name == "Unit") info.unit = u32(c);
         else if (name == "SubItem" && depth < 8) {
-            ObjectSubItemInfo sub;
+            ObjectSubItemInfo& sub = info.sub_items.emplace_back();
             sub.pos = pos_of(c);
+            bool has_info = false;
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
                 if (cn == "Name") sub.name = text_of(cc);
-                else if (cn == "Info") sub.info = read_object_info(cc, depth + 1);
-                else keep(sub.extras, cc, prev);
+                else if (cn == "Info") {
+                    if (has_info) sub.info = {};  // a repeated Info replaces the first
+                    read_object_info(sub.info, cc, depth + 1);
+                    has_info = true;
+                } else keep(sub.extras, cc, prev);
             });
-            info.sub_items.push_back(std::move(sub));
         } else keep(info.extras, c, previous);
     });
-    return info;
 }
 
-Object Reader::read_object(const pugi::xml_node n) {
-    Object o;
+void Reader::read_object(Object& o, const pugi::xml_node n) {
     o.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(o.extras, a);
     bool has_index = false;
@@ -963,16 +938,14 @@ Object Reader::read_object(const pugi::xml_node n) {
         } else if (name == "BitSize") {
             o.bit_size = u64(c).value_or(0);
             o.bit_size_pos = pos_of(c);
-        } else if (name == "Info") o.info = read_object_info(c, 0);
-        else if (name == "Flags") o.flags = read_flags(c);
+        } else if (name == "Info") read_object_info(o.info.emplace(), c, 0);
+        else if (name == "Flags") read_flags(o.flags.emplace(), c);
         else keep(o.extras, c, previous);
     });
     if (!has_index) missing("Object", "Index", o.pos);
-    return o;
 }
 
-Module Reader::read_module(const pugi::xml_node n) {
-    Module m;
+void Reader::read_module(Module& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(m.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
@@ -987,18 +960,16 @@ Module Reader::read_module(const pugi::xml_node n) {
                 else keep(m.type_extras, a);
             }
         } else if (name == "Name") m.names.push_back(localized(c));
-        else if (name == "RxPdo") m.rx_pdos.push_back(read_pdo(c, PdoDirection::rx));
-        else if (name == "TxPdo") m.tx_pdos.push_back(read_pdo(c, PdoDirection::tx));
-        else if (name == "Mailbox") m.mailbox = read_mailbox(c);
-        else if (name == "Profile") m.profile = read_profile(c);
+        else if (name == "RxPdo") read_pdo(m.rx_pdos.emplace_back(), c, PdoDirection::rx);
+        else if (name == "TxPdo") read_pdo(m.tx_pdos.emplace_back(), c, PdoDirection::tx);
+        else if (name == "Mailbox") read_mailbox(m.mailbox.emplace(), c);
+        else if (name == "Profile") read_profile(m.profile.emplace(), c);
         else if (name == "DcOpModeName") m.dc_op_mode_name = text_of(c);
         else if (!read_image(m.images, c, name)) keep(m.extras, c, previous);
     });
-    return m;
 }
 
-Slot Reader::read_slot(const pugi::xml_node n) {
-    Slot s;
+void Reader::read_slot(Slot& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -1035,11 +1006,9 @@ Slot Reader::read_slot(const pugi::xml_node n) {
             s.module_classes.push_back(std::move(mc));
         } else if (!read_image(s.images, c, name)) keep(s.extras, c, previous);
     });
-    return s;
 }
 
-Slots Reader::read_slots(const pugi::xml_node n) {
-    Slots s;
+void Reader::read_slots(Slots& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
@@ -1052,10 +1021,9 @@ Slots Reader::read_slots(const pugi::xml_node n) {
         else keep(s.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Slot") s.slots.push_back(read_slot(c));
+        if (name == "Slot") read_slot(s.slots.emplace_back(), c);
         else keep(s.extras, c, previous);
     });
-    return s;
 }
 
 std::string describe_parse_error(const pugi::xml_parse_result& result) {
