@@ -1,5 +1,6 @@
 #include "check/od_type_index.hpp"
 
+#include <unordered_map>
 #include <vector>
 
 #include "esi/data_types.hpp"
@@ -13,24 +14,18 @@ namespace {
 constexpr int max_base_type_steps = 32;
 }  // namespace
 
-TypeIndex::TypeIndex(const Dictionary& dictionary) { add(dictionary); }
+TypeIndex::TypeIndex(const Dictionary& dictionary) : TypeIndex(&dictionary) {}
 
-TypeIndex::TypeIndex(const Dictionary* dictionary) {
-    if (dictionary) add(*dictionary);
-}
-
-void TypeIndex::add(const Dictionary& dictionary) {
-    types_.reserve(dictionary.data_types.size());
-    for (const auto& t : dictionary.data_types) types_.emplace(std::string_view(t.name), &t);
-    find_cycles();
-}
+TypeIndex::TypeIndex(const Dictionary* dictionary) : data_types_(dictionary) { find_cycles(); }
 
 void TypeIndex::find_cycles() {
     // Every DataType has at most one BaseType, so the types form chains that either end or run
     // into one loop. One walk per chain, marking what it passed, finds every loop in linear time.
     enum class State { unvisited, on_path, done };
+    const Dictionary* dictionary = data_types_.dictionary();
+    if (!dictionary) return;
     std::unordered_map<const DataType*, State> state;
-    state.reserve(types_.size());
+    state.reserve(dictionary->data_types.size());
     const auto next = [&](const DataType* t) -> const DataType* {
         if (!t->base_type) return nullptr;
         const std::string_view base = trim(*t->base_type);
@@ -40,8 +35,9 @@ void TypeIndex::find_cycles() {
         return n;
     };
     std::vector<const DataType*> path;
-    for (const auto& [name, start] : types_) {
-        if (state[start] != State::unvisited) continue;
+    for (const auto& type : dictionary->data_types) {
+        const DataType* start = &type;
+        if (data_types_.find(type.name) != start || state[start] != State::unvisited) continue;  // only the first of a name is indexed
         path.clear();
         const DataType* t = start;
         while (t && state[t] == State::unvisited) {
@@ -81,10 +77,7 @@ const BasicType* TypeIndex::basic(std::string_view name) const {
     return nullptr;  // a BaseType loop, or a chain too long to be real
 }
 
-const DataType* TypeIndex::find(std::string_view name) const {
-    const auto it = types_.find(trim(name));
-    return it == types_.end() ? nullptr : it->second;
-}
+const DataType* TypeIndex::find(std::string_view name) const { return data_types_.find(trim(name)); }
 
 TypeNameStatus TypeIndex::status(std::string_view name, std::string_view* culprit) const {
     name = trim(name);

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <thread>
 
+#include "check/rule_cache.hpp"
 #include "esi/lint/suppression.hpp"
 #include "esi/lint/xsd.hpp"
 
@@ -23,11 +24,12 @@ bool LintReport::any_unreadable() const {
 
 Diagnostics run_rules(const EsiDocument& document, const EffectiveConfig& config) {
     Diagnostics out;
+    rules::RuleCache cache;  // the rules share Dictionary indexes and object layouts
     for (const Rule& rule : all_rules()) {
         if (!rule.check) continue;
         const std::optional<Severity> severity = config.severity_of(rule.id, rule.default_severity);
         if (!severity) continue;
-        RuleContext context(document, rule, *severity, config, out);
+        RuleContext context(document, rule, *severity, config, out, &cache);
         rule.check(document, context);
     }
     return out;
