@@ -4,6 +4,7 @@
 #include "esi/xml/reader.hpp"
 
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <pugixml.hpp>
@@ -16,6 +17,14 @@
 namespace esi {
 
 namespace {
+
+// Element and attribute names are compared with literals about ten times per element. This
+// compares the length, then a memcmp whose length is known at compile time, which the compiler
+// turns into a load or two; string_view's operator== was an out-of-line call plus a memcmp call.
+template <std::size_t N>
+bool is(std::string_view name, const char (&literal)[N]) {
+    return name.size() == N - 1 && std::memcmp(name.data(), literal, N - 1) == 0;
+}
 
 class Reader {
 public:
@@ -139,7 +148,7 @@ private:
         t.text = text_of(n);
         t.pos = pos_of(n);
         for (const auto a : n.attributes()) {
-            if (std::string_view(a.name()) == "LcId") t.lcid = integer<std::uint32_t>(a.value(), ValueSite{n, a, "LcId"});
+            if (is(a.name(), "LcId")) t.lcid = integer<std::uint32_t>(a.value(), ValueSite{n, a, "LcId"});
         }
         return t;
     }
@@ -241,11 +250,11 @@ private:
 };
 
 bool Reader::read_image(Images& images, const pugi::xml_node c, std::string_view name) {
-    if (name == "ImageData16x14") images.image_data16x14 = hex(c);
-    else if (name == "Image16x14") {
+    if (is(name, "ImageData16x14")) images.image_data16x14 = hex(c);
+    else if (is(name, "Image16x14")) {
         images.image16x14 = text_of(c);
         images.image16x14_pos = pos_of(c);
-    } else if (name == "ImageFile16x14") images.image_file16x14 = text_of(c);
+    } else if (is(name, "ImageFile16x14")) images.image_file16x14 = text_of(c);
     else return false;
     return true;
 }
@@ -254,27 +263,27 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
     EsiDocument doc;
     doc.root_pos = pos_of(root);
     const std::string_view name = root.name();
-    if (name == "EtherCATInfo") {
+    if (is(name, "EtherCATInfo")) {
         doc.kind = DocumentKind::ethercat_info;
         read_info(doc.infos.emplace_back(), root);
-    } else if (name == "EtherCATModule") {
+    } else if (is(name, "EtherCATModule")) {
         doc.kind = DocumentKind::ethercat_module;
         read_info(doc.infos.emplace_back(), root);
-    } else if (name == "EtherCATInfoList") {
+    } else if (is(name, "EtherCATInfoList")) {
         doc.kind = DocumentKind::ethercat_info_list;
         for (const auto a : root.attributes()) keep(doc.root_extras, a);
         for_children(root, [&](const pugi::xml_node c, std::string_view n, std::string_view previous) {
-            if (n == "EtherCATInfo") read_info(doc.infos.emplace_back(), c);
+            if (is(n, "EtherCATInfo")) read_info(doc.infos.emplace_back(), c);
             else keep(doc.root_extras, c, previous);
         });
-    } else if (name == "EtherCATDict") {
+    } else if (is(name, "EtherCATDict")) {
         doc.kind = DocumentKind::ethercat_dict;
         for (const auto a : root.attributes()) {
-            if (std::string_view(a.name()) == "Version") doc.dict_version = a.value();
+            if (is(a.name(), "Version")) doc.dict_version = a.value();
             else keep(doc.root_extras, a);
         }
         for_children(root, [&](const pugi::xml_node c, std::string_view n, std::string_view previous) {
-            if (n == "Dictionary" && !doc.dictionary) read_dictionary(doc.dictionary.emplace(), c);
+            if (is(n, "Dictionary") && !doc.dictionary) read_dictionary(doc.dictionary.emplace(), c);
             else keep(doc.root_extras, c, previous);
         });
     } else {
@@ -290,39 +299,39 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
 void Reader::read_info(EtherCATInfo& info, const pugi::xml_node n) {
     info.pos = pos_of(n);
     for (const auto a : n.attributes()) {
-        if (std::string_view(a.name()) == "Version") info.version = a.value();
+        if (is(a.name(), "Version")) info.version = a.value();
         else keep(info.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Vendor") {
+        if (is(name, "Vendor")) {
             read_vendor(info.vendor.emplace(), c);
-        } else if (name == "Descriptions") {
+        } else if (is(name, "Descriptions")) {
             info.has_descriptions = true;
             info.descriptions_pos = pos_of(c);
             for (const auto a : c.attributes()) keep(info.descriptions_extras, a);
             for_children(c, [&](const pugi::xml_node d, std::string_view dn, std::string_view dprev) {
-                if (dn == "Groups") {
+                if (is(dn, "Groups")) {
                     for_children(d, [&](const pugi::xml_node g, std::string_view gn, std::string_view) {
-                        if (gn == "Group") read_group(info.groups.emplace_back(), g);
+                        if (is(gn, "Group")) read_group(info.groups.emplace_back(), g);
                     });
-                } else if (dn == "Devices") {
+                } else if (is(dn, "Devices")) {
                     reserve_for(info.devices, d, "Device");
                     for_children(d, [&](const pugi::xml_node dev, std::string_view devn, std::string_view) {
-                        if (devn == "Device") read_device(info.devices.emplace_back(), dev);
+                        if (is(devn, "Device")) read_device(info.devices.emplace_back(), dev);
                     });
-                } else if (dn == "Modules") {
+                } else if (is(dn, "Modules")) {
                     info.has_modules = true;
                     for_children(d, [&](const pugi::xml_node m, std::string_view mn, std::string_view) {
-                        if (mn == "Module") read_module(info.modules.emplace_back(), m);
+                        if (is(mn, "Module")) read_module(info.modules.emplace_back(), m);
                     });
                 } else {
                     keep(info.descriptions_extras, d, dprev);
                 }
             });
-        } else if (name == "Modules") {  // EtherCATModule root
+        } else if (is(name, "Modules")) {  // EtherCATModule root
             info.has_modules = true;
             for_children(c, [&](const pugi::xml_node m, std::string_view mn, std::string_view) {
-                if (mn == "Module") read_module(info.modules.emplace_back(), m);
+                if (is(mn, "Module")) read_module(info.modules.emplace_back(), m);
             });
         } else {
             keep(info.extras, c, previous);
@@ -334,18 +343,18 @@ void Reader::read_vendor(Vendor& v, const pugi::xml_node n) {
     v.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "UniqueName") v.unique_name = a.value();
-        else if (an == "FileVersion") v.file_version = a.value();
+        if (is(an, "UniqueName")) v.unique_name = a.value();
+        else if (is(an, "FileVersion")) v.file_version = a.value();
         else keep(v.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Id") {
+        if (is(name, "Id")) {
             v.id = u32(c);
             v.id_pos = pos_of(c);
-        } else if (name == "Name") v.names.push_back(localized(c));
-        else if (name == "Comment") v.comments.push_back(localized(c));
-        else if (name == "URL") v.urls.push_back(localized(c));
-        else if (name == "DescriptionURL") v.description_url = text_of(c);
+        } else if (is(name, "Name")) v.names.push_back(localized(c));
+        else if (is(name, "Comment")) v.comments.push_back(localized(c));
+        else if (is(name, "URL")) v.urls.push_back(localized(c));
+        else if (is(name, "DescriptionURL")) v.description_url = text_of(c);
         else if (!read_image(v.images, c, name)) keep(v.extras, c, previous);
     });
 }
@@ -354,16 +363,16 @@ void Reader::read_group(Group& g, const pugi::xml_node n) {
     g.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "SortOrder") g.sort_order = i32(a, n);
-        else if (an == "ParentGroup") g.parent_group = a.value();
+        if (is(an, "SortOrder")) g.sort_order = i32(a, n);
+        else if (is(an, "ParentGroup")) g.parent_group = a.value();
         else keep(g.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Type") {
+        if (is(name, "Type")) {
             g.type = text_of(c);
             g.type_pos = pos_of(c);
-        } else if (name == "Name") g.names.push_back(localized(c));
-        else if (name == "Comment") g.comments.push_back(localized(c));
+        } else if (is(name, "Name")) g.names.push_back(localized(c));
+        else if (is(name, "Comment")) g.comments.push_back(localized(c));
         else if (!read_image(g.images, c, name)) keep(g.extras, c, previous);
     });
 }
@@ -373,10 +382,10 @@ void Reader::read_identity(DeviceIdentity& t, const pugi::xml_node n) {
     t.text = text_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "ProductCode") t.product_code = u32(a, n);
-        else if (an == "RevisionNo") t.revision_no = u32(a, n);
-        else if (an == "SerialNo") t.serial_no = u32(a, n);
-        else if (an == "TcCfgModeSafeOp") t.tc_cfg_mode_safe_op = boolean(a, n);
+        if (is(an, "ProductCode")) t.product_code = u32(a, n);
+        else if (is(an, "RevisionNo")) t.revision_no = u32(a, n);
+        else if (is(an, "SerialNo")) t.serial_no = u32(a, n);
+        else if (is(an, "TcCfgModeSafeOp")) t.tc_cfg_mode_safe_op = boolean(a, n);
         else keep(t.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(t.extras, c, previous); });
@@ -386,32 +395,32 @@ void Reader::read_device(Device& d, const pugi::xml_node n) {
     d.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "Physics") d.physics = a.value();
-        else if (an == "Invisible") d.invisible = boolean(a, n);
+        if (is(an, "Physics")) d.physics = a.value();
+        else if (is(an, "Invisible")) d.invisible = boolean(a, n);
         else keep(d.extras, a);
     }
     bool has_type = false;
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Type") {
+        if (is(name, "Type")) {
             if (has_type) d.type = {};  // a repeated Type replaces the first
             read_identity(d.type, c);
             has_type = true;
-        } else if (name == "Name") d.names.push_back(localized(c));
-        else if (name == "Comment") d.comments.push_back(localized(c));
-        else if (name == "URL") d.urls.push_back(localized(c));
-        else if (name == "GroupType") {
+        } else if (is(name, "Name")) d.names.push_back(localized(c));
+        else if (is(name, "Comment")) d.comments.push_back(localized(c));
+        else if (is(name, "URL")) d.urls.push_back(localized(c));
+        else if (is(name, "GroupType")) {
             d.group_type = text_of(c);
             d.group_type_pos = pos_of(c);
-        } else if (name == "Profile") read_profile(d.profiles.emplace_back(), c);
-        else if (name == "Fmmu") read_fmmu(d.fmmus.emplace_back(), c);
-        else if (name == "Sm") read_sm(d.sms.emplace_back(), c);
-        else if (name == "Su") read_su(d.sus.emplace_back(), c);
-        else if (name == "RxPdo") read_pdo(d.rx_pdos.emplace_back(), c, PdoDirection::rx);
-        else if (name == "TxPdo") read_pdo(d.tx_pdos.emplace_back(), c, PdoDirection::tx);
-        else if (name == "Mailbox") read_mailbox(d.mailbox.emplace(), c);
-        else if (name == "Dc") read_dc(d.dc.emplace(), c);
-        else if (name == "Slots") read_slots(d.slots.emplace(), c);
-        else if (name == "Eeprom") read_eeprom(d.eeprom.emplace(), c);
+        } else if (is(name, "Profile")) read_profile(d.profiles.emplace_back(), c);
+        else if (is(name, "Fmmu")) read_fmmu(d.fmmus.emplace_back(), c);
+        else if (is(name, "Sm")) read_sm(d.sms.emplace_back(), c);
+        else if (is(name, "Su")) read_su(d.sus.emplace_back(), c);
+        else if (is(name, "RxPdo")) read_pdo(d.rx_pdos.emplace_back(), c, PdoDirection::rx);
+        else if (is(name, "TxPdo")) read_pdo(d.tx_pdos.emplace_back(), c, PdoDirection::tx);
+        else if (is(name, "Mailbox")) read_mailbox(d.mailbox.emplace(), c);
+        else if (is(name, "Dc")) read_dc(d.dc.emplace(), c);
+        else if (is(name, "Slots")) read_slots(d.slots.emplace(), c);
+        else if (is(name, "Eeprom")) read_eeprom(d.eeprom.emplace(), c);
         else if (!read_image(d.images, c, name)) keep(d.extras, c, previous);
     });
     if (!has_type) missing("Device", "Type", d.pos);
@@ -422,17 +431,17 @@ void Reader::read_sm(SyncManager& sm, const pugi::xml_node n) {
     sm.type = text_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "StartAddress") sm.start_address = u32(a, n);
-        else if (an == "ControlByte") sm.control_byte = u32(a, n);
-        else if (an == "DefaultSize") sm.default_size = u32(a, n);
-        else if (an == "MinSize") sm.min_size = u32(a, n);
-        else if (an == "MaxSize") sm.max_size = u32(a, n);
-        else if (an == "Enable") sm.enable = u32(a, n);
-        else if (an == "OneByteMode") sm.one_byte_mode = boolean(a, n);
-        else if (an == "Virtual") sm.is_virtual = boolean(a, n);
-        else if (an == "Watchdog") sm.watchdog = boolean(a, n);
-        else if (an == "OpOnly") sm.op_only = boolean(a, n);
-        else if (an == "FixedAssignment") sm.fixed_assignment = boolean(a, n);
+        if (is(an, "StartAddress")) sm.start_address = u32(a, n);
+        else if (is(an, "ControlByte")) sm.control_byte = u32(a, n);
+        else if (is(an, "DefaultSize")) sm.default_size = u32(a, n);
+        else if (is(an, "MinSize")) sm.min_size = u32(a, n);
+        else if (is(an, "MaxSize")) sm.max_size = u32(a, n);
+        else if (is(an, "Enable")) sm.enable = u32(a, n);
+        else if (is(an, "OneByteMode")) sm.one_byte_mode = boolean(a, n);
+        else if (is(an, "Virtual")) sm.is_virtual = boolean(a, n);
+        else if (is(an, "Watchdog")) sm.watchdog = boolean(a, n);
+        else if (is(an, "OpOnly")) sm.op_only = boolean(a, n);
+        else if (is(an, "FixedAssignment")) sm.fixed_assignment = boolean(a, n);
         else keep(sm.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(sm.extras, c, previous); });
@@ -443,9 +452,9 @@ void Reader::read_fmmu(Fmmu& f, const pugi::xml_node n) {
     f.type = text_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "Sm") f.sm = u32(a, n);
-        else if (an == "Su") f.su = u32(a, n);
-        else if (an == "OpOnly") f.op_only = boolean(a, n);
+        if (is(an, "Sm")) f.sm = u32(a, n);
+        else if (is(an, "Su")) f.su = u32(a, n);
+        else if (is(an, "OpOnly")) f.op_only = boolean(a, n);
         else keep(f.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(f.extras, c, previous); });
@@ -456,10 +465,10 @@ void Reader::read_su(SyncUnit& s, const pugi::xml_node n) {
     s.text = text_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "SeparateSu") s.separate_su = boolean(a, n);
-        else if (an == "SeparateFrame") s.separate_frame = boolean(a, n);
-        else if (an == "DependOnInputState") s.depend_on_input_state = boolean(a, n);
-        else if (an == "FrameRepeatSupport") s.frame_repeat_support = boolean(a, n);
+        if (is(an, "SeparateSu")) s.separate_su = boolean(a, n);
+        else if (is(an, "SeparateFrame")) s.separate_frame = boolean(a, n);
+        else if (is(an, "DependOnInputState")) s.depend_on_input_state = boolean(a, n);
+        else if (is(an, "FrameRepeatSupport")) s.frame_repeat_support = boolean(a, n);
         else keep(s.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(s.extras, c, previous); });
@@ -470,27 +479,27 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
     p.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "Fixed") p.fixed = boolean(a, n);
-        else if (an == "Mandatory") p.mandatory = boolean(a, n);
-        else if (an == "Virtual") p.is_virtual = boolean(a, n);
-        else if (an == "Sm") p.sm = u32(a, n);
-        else if (an == "Su") p.su = u32(a, n);
-        else if (an == "PdoOrder") p.pdo_order = i32(a, n);
-        else if (an == "OSFac") p.os_fac = i32(a, n);
-        else if (an == "OSMin") p.os_min = i32(a, n);
-        else if (an == "OSMax") p.os_max = i32(a, n);
-        else if (an == "OSIndexInc") p.os_index_inc = i32(a, n);
-        else if (an == "OverwrittenByModule") p.overwritten_by_module = boolean(a, n);
-        else if (an == "SRA_Parameter") p.sra_parameter = boolean(a, n);
-        else if (an == "SafetyPdoType") p.safety_pdo_type = a.value();
-        else if (an == "SafetyConnNumber") p.safety_conn_number = i32(a, n);
+        if (is(an, "Fixed")) p.fixed = boolean(a, n);
+        else if (is(an, "Mandatory")) p.mandatory = boolean(a, n);
+        else if (is(an, "Virtual")) p.is_virtual = boolean(a, n);
+        else if (is(an, "Sm")) p.sm = u32(a, n);
+        else if (is(an, "Su")) p.su = u32(a, n);
+        else if (is(an, "PdoOrder")) p.pdo_order = i32(a, n);
+        else if (is(an, "OSFac")) p.os_fac = i32(a, n);
+        else if (is(an, "OSMin")) p.os_min = i32(a, n);
+        else if (is(an, "OSMax")) p.os_max = i32(a, n);
+        else if (is(an, "OSIndexInc")) p.os_index_inc = i32(a, n);
+        else if (is(an, "OverwrittenByModule")) p.overwritten_by_module = boolean(a, n);
+        else if (is(an, "SRA_Parameter")) p.sra_parameter = boolean(a, n);
+        else if (is(an, "SafetyPdoType")) p.safety_pdo_type = a.value();
+        else if (is(an, "SafetyConnNumber")) p.safety_conn_number = i32(a, n);
         else keep(p.extras, a);
     }
     reserve_for(p.entries, n, "Entry");
     reserve_for(p.excludes, n, "Exclude");
     bool has_index = false;
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Index") {
+        if (is(name, "Index")) {
             has_index = true;
             p.index_pos = pos_of(c);
             const std::optional<std::uint32_t> index = u32(c);
@@ -498,22 +507,22 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
             p.index_invalid = !index;
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "DependOnSlot") p.index_depend_on_slot = boolean(a, c);
-                else if (an == "DependOnSlotGroup") p.index_depend_on_slot_group = boolean(a, c);
+                if (is(an, "DependOnSlot")) p.index_depend_on_slot = boolean(a, c);
+                else if (is(an, "DependOnSlotGroup")) p.index_depend_on_slot_group = boolean(a, c);
             }
-        } else if (name == "Name") p.names.push_back(localized(c));
-        else if (name == "Exclude") {
+        } else if (is(name, "Name")) p.names.push_back(localized(c));
+        else if (is(name, "Exclude")) {
             PdoExclude e;
             e.pos = pos_of(c);
             e.index = u32(c).value_or(0);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "DependOnSlot") e.depend_on_slot = boolean(a, c);
-                else if (an == "DependOnSlotGroup") e.depend_on_slot_group = boolean(a, c);
+                if (is(an, "DependOnSlot")) e.depend_on_slot = boolean(a, c);
+                else if (is(an, "DependOnSlotGroup")) e.depend_on_slot_group = boolean(a, c);
             }
             p.excludes.push_back(e);
-        } else if (name == "Entry") read_entry(p.entries.emplace_back(), c);
-        else if (name == "ExcludedSm") {
+        } else if (is(name, "Entry")) read_entry(p.entries.emplace_back(), c);
+        else if (is(name, "ExcludedSm")) {
             if (auto v = u32(c)) p.excluded_sms.push_back(*v);
         } else keep(p.extras, c, previous);
     });
@@ -524,13 +533,13 @@ void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
     e.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "Fixed") e.fixed = boolean(a, n);
+        if (is(an, "Fixed")) e.fixed = boolean(a, n);
         else keep(e.extras, a);
     }
     bool has_index = false;
     bool has_bit_len = false;
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Index") {
+        if (is(name, "Index")) {
             has_index = true;
             const std::optional<std::uint32_t> index = u32(c);
             e.index = index.value_or(0);
@@ -538,23 +547,23 @@ void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
             e.index_pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "DependOnSlot") e.index_depend_on_slot = boolean(a, c);
-                else if (an == "DependOnSlotGroup") e.index_depend_on_slot_group = boolean(a, c);
+                if (is(an, "DependOnSlot")) e.index_depend_on_slot = boolean(a, c);
+                else if (is(an, "DependOnSlotGroup")) e.index_depend_on_slot_group = boolean(a, c);
             }
-        } else if (name == "SubIndex") e.subindex = u32(c);
-        else if (name == "BitLen") {
+        } else if (is(name, "SubIndex")) e.subindex = u32(c);
+        else if (is(name, "BitLen")) {
             has_bit_len = true;
             e.bit_len = u32(c).value_or(0);
             e.bit_len_pos = pos_of(c);
-        } else if (name == "Name") e.names.push_back(localized(c));
-        else if (name == "Comment") e.comment = text_of(c);
-        else if (name == "DataType") {
+        } else if (is(name, "Name")) e.names.push_back(localized(c));
+        else if (is(name, "Comment")) e.comment = text_of(c);
+        else if (is(name, "DataType")) {
             e.data_type = text_of(c);
             e.data_type_pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "DScale") e.data_type_dscale = a.value();
-                else if (an == "SwapData") e.data_type_swap_data = boolean(a, c);
+                if (is(an, "DScale")) e.data_type_dscale = a.value();
+                else if (is(an, "SwapData")) e.data_type_swap_data = boolean(a, c);
             }
         } else keep(e.extras, c, previous);
     });
@@ -566,30 +575,30 @@ void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
     cmd.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "Fixed") cmd.fixed = boolean(a, n);
-        else if (an == "CompleteAccess") cmd.complete_access = boolean(a, n);
-        else if (an == "OverwrittenByModule") cmd.overwritten_by_module = boolean(a, n);
-        else if (an == "Chn") cmd.channel = i32(a, n);
+        if (is(an, "Fixed")) cmd.fixed = boolean(a, n);
+        else if (is(an, "CompleteAccess")) cmd.complete_access = boolean(a, n);
+        else if (is(an, "OverwrittenByModule")) cmd.overwritten_by_module = boolean(a, n);
+        else if (is(an, "Chn")) cmd.channel = i32(a, n);
         else keep(cmd.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Transition") cmd.transitions.push_back(Transition{text_of(c), pos_of(c)});
-        else if (name == "Index") {
+        if (is(name, "Transition")) cmd.transitions.push_back(Transition{text_of(c), pos_of(c)});
+        else if (is(name, "Index")) {
             cmd.index = u32(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "DependOnSlot") cmd.index_depend_on_slot = boolean(a, c);
-                else if (an == "DependOnSlotGroup") cmd.index_depend_on_slot_group = boolean(a, c);
+                if (is(an, "DependOnSlot")) cmd.index_depend_on_slot = boolean(a, c);
+                else if (is(an, "DependOnSlotGroup")) cmd.index_depend_on_slot_group = boolean(a, c);
             }
-        } else if (name == "SubIndex") cmd.subindex = u32(c);
-        else if (name == "IDN") cmd.idn = i64(c);
-        else if (name == "Type") cmd.type = i64(c);
-        else if (name == "Data") {
+        } else if (is(name, "SubIndex")) cmd.subindex = u32(c);
+        else if (is(name, "IDN")) cmd.idn = i64(c);
+        else if (is(name, "Type")) cmd.type = i64(c);
+        else if (is(name, "Data")) {
             cmd.data = hex(c);
             cmd.has_data = true;
             for (const auto a : c.attributes())
-                if (std::string_view(a.name()) == "AdaptAutomatically") cmd.data_adapt_automatically = boolean(a, c);
-        } else if (name == "Comment") cmd.comment = text_of(c);
+                if (is(a.name(), "AdaptAutomatically")) cmd.data_adapt_automatically = boolean(a, c);
+        } else if (is(name, "Comment")) cmd.comment = text_of(c);
         else keep(cmd.extras, c, previous);
     });
 }
@@ -598,23 +607,23 @@ void Reader::read_coe(CoeProtocol& coe, const pugi::xml_node n) {
     coe.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "SdoInfo") coe.sdo_info = boolean(a, n);
-        else if (an == "PdoAssign") coe.pdo_assign = boolean(a, n);
-        else if (an == "PdoConfig") coe.pdo_config = boolean(a, n);
-        else if (an == "PdoUpload") coe.pdo_upload = boolean(a, n);
-        else if (an == "CompleteAccess") coe.complete_access = boolean(a, n);
-        else if (an == "SegmentedSdo") coe.segmented_sdo = boolean(a, n);
-        else if (an == "DiagHistory") coe.diag_history = boolean(a, n);
-        else if (an == "SdoUploadWithMaxLength") coe.sdo_upload_with_max_length = boolean(a, n);
-        else if (an == "TimeDistribution") coe.time_distribution = boolean(a, n);
-        else if (an == "ModuleOD") coe.module_od = boolean(a, n);
-        else if (an == "EdsFile") coe.eds_file = a.value();
-        else if (an == "DS402Channels") coe.ds402_channels = i32(a, n);
+        if (is(an, "SdoInfo")) coe.sdo_info = boolean(a, n);
+        else if (is(an, "PdoAssign")) coe.pdo_assign = boolean(a, n);
+        else if (is(an, "PdoConfig")) coe.pdo_config = boolean(a, n);
+        else if (is(an, "PdoUpload")) coe.pdo_upload = boolean(a, n);
+        else if (is(an, "CompleteAccess")) coe.complete_access = boolean(a, n);
+        else if (is(an, "SegmentedSdo")) coe.segmented_sdo = boolean(a, n);
+        else if (is(an, "DiagHistory")) coe.diag_history = boolean(a, n);
+        else if (is(an, "SdoUploadWithMaxLength")) coe.sdo_upload_with_max_length = boolean(a, n);
+        else if (is(an, "TimeDistribution")) coe.time_distribution = boolean(a, n);
+        else if (is(an, "ModuleOD")) coe.module_od = boolean(a, n);
+        else if (is(an, "EdsFile")) coe.eds_file = a.value();
+        else if (is(an, "DS402Channels")) coe.ds402_channels = i32(a, n);
         else keep(coe.extras, a);
     }
     reserve_for(coe.init_cmds, n, "InitCmd");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "InitCmd") read_init_cmd(coe.init_cmds.emplace_back(), c);
+        if (is(name, "InitCmd")) read_init_cmd(coe.init_cmds.emplace_back(), c);
         else keep(coe.extras, c, previous);
     });
 }
@@ -623,63 +632,63 @@ void Reader::read_mailbox(Mailbox& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "DataLinkLayer") m.data_link_layer = boolean(a, n);
-        else if (an == "RealTimeMode") m.real_time_mode = boolean(a, n);
+        if (is(an, "DataLinkLayer")) m.data_link_layer = boolean(a, n);
+        else if (is(an, "RealTimeMode")) m.real_time_mode = boolean(a, n);
         else keep(m.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "CoE") {
+        if (is(name, "CoE")) {
             read_coe(m.coe.emplace(), c);
-        } else if (name == "EoE") {
+        } else if (is(name, "EoE")) {
             EoeProtocol eoe;
             eoe.pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "IP") eoe.ip = boolean(a, c);
-                else if (an == "MAC") eoe.mac = boolean(a, c);
-                else if (an == "TimeStamp") eoe.time_stamp = boolean(a, c);
+                if (is(an, "IP")) eoe.ip = boolean(a, c);
+                else if (is(an, "MAC")) eoe.mac = boolean(a, c);
+                else if (is(an, "TimeStamp")) eoe.time_stamp = boolean(a, c);
                 else keep(eoe.extras, a);
             }
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "InitCmd") read_init_cmd(eoe.init_cmds.emplace_back(), cc);
+                if (is(cn, "InitCmd")) read_init_cmd(eoe.init_cmds.emplace_back(), cc);
                 else keep(eoe.extras, cc, prev);
             });
             m.eoe = std::move(eoe);
-        } else if (name == "SoE") {
+        } else if (is(name, "SoE")) {
             SoeProtocol soe;
             soe.pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "ChannelCount") soe.channel_count = i32(a, c);
-                else if (an == "DriveFollowsBit3Support") soe.drive_follows_bit3_support = boolean(a, c);
+                if (is(an, "ChannelCount")) soe.channel_count = i32(a, c);
+                else if (is(an, "DriveFollowsBit3Support")) soe.drive_follows_bit3_support = boolean(a, c);
                 else keep(soe.extras, a);
             }
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "InitCmd") read_init_cmd(soe.init_cmds.emplace_back(), cc);
+                if (is(cn, "InitCmd")) read_init_cmd(soe.init_cmds.emplace_back(), cc);
                 else keep(soe.extras, cc, prev);
             });
             m.soe = std::move(soe);
-        } else if (name == "AoE") {
+        } else if (is(name, "AoE")) {
             AoeProtocol aoe;
             aoe.pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "AdsRouter") aoe.ads_router = boolean(a, c);
-                else if (an == "GenerateOwnNetId") aoe.generate_own_net_id = boolean(a, c);
-                else if (an == "InitializeOwnNetId") aoe.initialize_own_net_id = boolean(a, c);
+                if (is(an, "AdsRouter")) aoe.ads_router = boolean(a, c);
+                else if (is(an, "GenerateOwnNetId")) aoe.generate_own_net_id = boolean(a, c);
+                else if (is(an, "InitializeOwnNetId")) aoe.initialize_own_net_id = boolean(a, c);
                 else keep(aoe.extras, a);
             }
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "InitCmd") read_init_cmd(aoe.init_cmds.emplace_back(), cc);
+                if (is(cn, "InitCmd")) read_init_cmd(aoe.init_cmds.emplace_back(), cc);
                 else keep(aoe.extras, cc, prev);
             });
             m.aoe = std::move(aoe);
-        } else if (name == "FoE" || name == "VoE") {
+        } else if (is(name, "FoE") || is(name, "VoE")) {
             PlainProtocol p;
             p.pos = pos_of(c);
             for (const auto a : c.attributes()) keep(p.extras, a);
             for_children(c, [&](const pugi::xml_node cc, std::string_view, std::string_view prev) { keep(p.extras, cc, prev); });
-            (name == "FoE" ? m.foe : m.voe) = std::move(p);
+            (is(name, "FoE") ? m.foe : m.voe) = std::move(p);
         } else {
             keep(m.extras, c, previous);
         }
@@ -692,10 +701,10 @@ DcTime Reader::read_dc_time(const pugi::xml_node n) {
     t.value = i64(n).value_or(0);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "Factor") t.factor = i32(a, n);
-        else if (an == "Input") t.input = boolean(a, n);
-        else if (an == "OutputDelayTime") t.output_delay_time = i32(a, n);
-        else if (an == "InputDelayTime") t.input_delay_time = i32(a, n);
+        if (is(an, "Factor")) t.factor = i32(a, n);
+        else if (is(an, "Input")) t.input = boolean(a, n);
+        else if (is(an, "OutputDelayTime")) t.output_delay_time = i32(a, n);
+        else if (is(an, "InputDelayTime")) t.input_delay_time = i32(a, n);
     }
     return t;
 }
@@ -704,18 +713,18 @@ void Reader::read_op_mode(DcOpMode& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(m.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Name") m.name = text_of(c);
-        else if (name == "Desc") m.desc = text_of(c);
-        else if (name == "AssignActivate") {
+        if (is(name, "Name")) m.name = text_of(c);
+        else if (is(name, "Desc")) m.desc = text_of(c);
+        else if (is(name, "AssignActivate")) {
             m.assign_activate_pos = pos_of(c);
             if (auto v = u32(c)) {
                 m.assign_activate = *v;
                 m.has_assign_activate = true;
             }
-        } else if (name == "CycleTimeSync0") m.cycle_time_sync0 = read_dc_time(c);
-        else if (name == "ShiftTimeSync0") m.shift_time_sync0 = read_dc_time(c);
-        else if (name == "CycleTimeSync1") m.cycle_time_sync1 = read_dc_time(c);
-        else if (name == "ShiftTimeSync1") m.shift_time_sync1 = read_dc_time(c);
+        } else if (is(name, "CycleTimeSync0")) m.cycle_time_sync0 = read_dc_time(c);
+        else if (is(name, "ShiftTimeSync0")) m.shift_time_sync0 = read_dc_time(c);
+        else if (is(name, "CycleTimeSync1")) m.cycle_time_sync1 = read_dc_time(c);
+        else if (is(name, "ShiftTimeSync1")) m.shift_time_sync1 = read_dc_time(c);
         else keep(m.extras, c, previous);
     });
 }
@@ -724,15 +733,15 @@ void Reader::read_dc(Dc& dc, const pugi::xml_node n) {
     dc.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "UnknownFRMW") dc.unknown_frmw = boolean(a, n);
-        else if (an == "Unknown64Bit") dc.unknown_64bit = boolean(a, n);
-        else if (an == "ExternalRefClock") dc.external_ref_clock = boolean(a, n);
-        else if (an == "PotentialReferenceClock") dc.potential_reference_clock = boolean(a, n);
-        else if (an == "TimeLoopControlOnly") dc.time_loop_control_only = boolean(a, n);
+        if (is(an, "UnknownFRMW")) dc.unknown_frmw = boolean(a, n);
+        else if (is(an, "Unknown64Bit")) dc.unknown_64bit = boolean(a, n);
+        else if (is(an, "ExternalRefClock")) dc.external_ref_clock = boolean(a, n);
+        else if (is(an, "PotentialReferenceClock")) dc.potential_reference_clock = boolean(a, n);
+        else if (is(an, "TimeLoopControlOnly")) dc.time_loop_control_only = boolean(a, n);
         else keep(dc.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "OpMode") read_op_mode(dc.op_modes.emplace_back(), c);
+        if (is(name, "OpMode")) read_op_mode(dc.op_modes.emplace_back(), c);
         else keep(dc.extras, c, previous);
     });
 }
@@ -740,31 +749,31 @@ void Reader::read_dc(Dc& dc, const pugi::xml_node n) {
 void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
     e.pos = pos_of(n);
     for (const auto a : n.attributes()) {
-        if (std::string_view(a.name()) == "AssignToPdi") e.assign_to_pdi = boolean(a, n);
+        if (is(a.name(), "AssignToPdi")) e.assign_to_pdi = boolean(a, n);
         else keep(e.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Data") e.data = hex(c);
-        else if (name == "ByteSize") {
+        if (is(name, "Data")) e.data = hex(c);
+        else if (is(name, "ByteSize")) {
             e.byte_size = u32(c);
             e.byte_size_pos = pos_of(c);
-        } else if (name == "ConfigData") e.config_data = hex(c);
-        else if (name == "BootStrap") e.boot_strap = hex(c);
-        else if (name == "Category") {
+        } else if (is(name, "ConfigData")) e.config_data = hex(c);
+        else if (is(name, "BootStrap")) e.boot_strap = hex(c);
+        else if (is(name, "Category")) {
             EepromCategory cat;
             cat.pos = pos_of(c);
             for (const auto a : c.attributes()) {
-                if (std::string_view(a.name()) == "PreserveOnlineData") cat.preserve_online_data = boolean(a, c);
+                if (is(a.name(), "PreserveOnlineData")) cat.preserve_online_data = boolean(a, c);
                 else keep(cat.extras, a);
             }
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "CatNo") {
+                if (is(cn, "CatNo")) {
                     cat.cat_no = u32(cc).value_or(0);
                     cat.cat_no_pos = pos_of(cc);
-                } else if (cn == "Data") cat.data = hex(cc);
-                else if (cn == "DataString") cat.data_string = cc.text().get();
-                else if (cn == "DataUINT") cat.data_uint = u64(cc);
-                else if (cn == "DataUDINT") cat.data_udint = u64(cc);
+                } else if (is(cn, "Data")) cat.data = hex(cc);
+                else if (is(cn, "DataString")) cat.data_string = cc.text().get();
+                else if (is(cn, "DataUINT")) cat.data_uint = u64(cc);
+                else if (is(cn, "DataUDINT")) cat.data_udint = u64(cc);
                 else keep(cat.extras, cc, prev);
             });
             e.categories.push_back(std::move(cat));
@@ -775,14 +784,14 @@ void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
 void Reader::read_profile(Profile& p, const pugi::xml_node n) {
     p.pos = pos_of(n);
     for (const auto a : n.attributes()) {
-        if (std::string_view(a.name()) == "Channel") p.channel = i32(a, n);
+        if (is(a.name(), "Channel")) p.channel = i32(a, n);
         else keep(p.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "ProfileNo") p.profile_no = i32(c);
-        else if (name == "AddInfo") p.add_info = i32(c);
-        else if (name == "DictionaryFile") p.dictionary_file = text_of(c);
-        else if (name == "Dictionary") read_dictionary(p.dictionary.emplace(), c);
+        if (is(name, "ProfileNo")) p.profile_no = i32(c);
+        else if (is(name, "AddInfo")) p.add_info = i32(c);
+        else if (is(name, "DictionaryFile")) p.dictionary_file = text_of(c);
+        else if (is(name, "Dictionary")) read_dictionary(p.dictionary.emplace(), c);
         else keep(p.extras, c, previous);
     });
 }
@@ -791,15 +800,15 @@ void Reader::read_dictionary(Dictionary& d, const pugi::xml_node n) {
     d.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(d.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "DataTypes") {
+        if (is(name, "DataTypes")) {
             reserve_for(d.data_types, c, "DataType");
             for_children(c, [&](const pugi::xml_node t, std::string_view tn, std::string_view) {
-                if (tn == "DataType") read_data_type(d.data_types.emplace_back(), t);
+                if (is(tn, "DataType")) read_data_type(d.data_types.emplace_back(), t);
             });
-        } else if (name == "Objects") {
+        } else if (is(name, "Objects")) {
             reserve_for(d.objects, c, "Object");
             for_children(c, [&](const pugi::xml_node o, std::string_view on, std::string_view) {
-                if (on == "Object") read_object(d.objects.emplace_back(), o);
+                if (is(on, "Object")) read_object(d.objects.emplace_back(), o);
             });
         } else {
             keep(d.extras, c, previous);
@@ -812,29 +821,29 @@ void Reader::read_data_type(DataType& t, const pugi::xml_node n) {
     for (const auto a : n.attributes()) keep(t.extras, a);
     reserve_for(t.sub_items, n, "SubItem");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Index") t.index = u32(c);
-        else if (name == "Name") {
+        if (is(name, "Index")) t.index = u32(c);
+        else if (is(name, "Name")) {
             t.name = text_of(c);
             t.name_pos = pos_of(c);
-        } else if (name == "BaseType") t.base_type = text_of(c);
-        else if (name == "Comment") t.comments.push_back(localized(c));
-        else if (name == "BitSize") t.bit_size = u64(c).value_or(0);
-        else if (name == "ArrayInfo") {
+        } else if (is(name, "BaseType")) t.base_type = text_of(c);
+        else if (is(name, "Comment")) t.comments.push_back(localized(c));
+        else if (is(name, "BitSize")) t.bit_size = u64(c).value_or(0);
+        else if (is(name, "ArrayInfo")) {
             ArrayInfo ai;
             ai.pos = pos_of(c);
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view) {
-                if (cn == "LBound") ai.lower_bound = i64(cc).value_or(0);
-                else if (cn == "Elements") ai.elements = i64(cc).value_or(0);
+                if (is(cn, "LBound")) ai.lower_bound = i64(cc).value_or(0);
+                else if (is(cn, "Elements")) ai.elements = i64(cc).value_or(0);
             });
             t.array_info.push_back(ai);
-        } else if (name == "SubItem") read_type_sub_item(t.sub_items.emplace_back(), c);
-        else if (name == "EnumInfo") {
+        } else if (is(name, "SubItem")) read_type_sub_item(t.sub_items.emplace_back(), c);
+        else if (is(name, "EnumInfo")) {
             EnumValue ev;
             ev.pos = pos_of(c);
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view) {
-                if (cn == "Text") ev.texts.push_back(localized(cc));
-                else if (cn == "Enum") ev.value = number(cc).value_or(Number{});
-                else if (cn == "Comment") ev.comments.push_back(localized(cc));
+                if (is(cn, "Text")) ev.texts.push_back(localized(cc));
+                else if (is(cn, "Enum")) ev.value = number(cc).value_or(Number{});
+                else if (is(cn, "Comment")) ev.comments.push_back(localized(cc));
             });
             t.enums.push_back(std::move(ev));
         } else keep(t.extras, c, previous);
@@ -845,19 +854,19 @@ void Reader::read_type_sub_item(DataTypeSubItem& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(s.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "SubIdx") s.subindex = u32(c);
-        else if (name == "Name") s.name = text_of(c);
-        else if (name == "DisplayName") s.display_names.push_back(localized(c));
-        else if (name == "Type") s.type = text_of(c);
-        else if (name == "Comment") s.comments.push_back(localized(c));
-        else if (name == "BitSize") s.bit_size = u64(c).value_or(0);
-        else if (name == "BitOffs") s.bit_offset = u64(c).value_or(0);
-        else if (name == "DefaultString") s.default_string = c.text().get();
-        else if (name == "DefaultData") s.default_data = hex(c);
-        else if (name == "MinValue") s.min_value = number(c);
-        else if (name == "MaxValue") s.max_value = number(c);
-        else if (name == "DefaultValue") s.default_value = number(c);
-        else if (name == "Flags") read_flags(s.flags.emplace(), c);
+        if (is(name, "SubIdx")) s.subindex = u32(c);
+        else if (is(name, "Name")) s.name = text_of(c);
+        else if (is(name, "DisplayName")) s.display_names.push_back(localized(c));
+        else if (is(name, "Type")) s.type = text_of(c);
+        else if (is(name, "Comment")) s.comments.push_back(localized(c));
+        else if (is(name, "BitSize")) s.bit_size = u64(c).value_or(0);
+        else if (is(name, "BitOffs")) s.bit_offset = u64(c).value_or(0);
+        else if (is(name, "DefaultString")) s.default_string = c.text().get();
+        else if (is(name, "DefaultData")) s.default_data = hex(c);
+        else if (is(name, "MinValue")) s.min_value = number(c);
+        else if (is(name, "MaxValue")) s.max_value = number(c);
+        else if (is(name, "DefaultValue")) s.default_value = number(c);
+        else if (is(name, "Flags")) read_flags(s.flags.emplace(), c);
         else keep(s.extras, c, previous);
     });
 }
@@ -866,21 +875,21 @@ void Reader::read_flags(ObjectFlags& f, const pugi::xml_node n) {
     f.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(f.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Access") {
+        if (is(name, "Access")) {
             f.access = text_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "ReadRestrictions") f.access_read_restrictions = a.value();
-                else if (an == "WriteRestrictions") f.access_write_restrictions = a.value();
+                if (is(an, "ReadRestrictions")) f.access_read_restrictions = a.value();
+                else if (is(an, "WriteRestrictions")) f.access_write_restrictions = a.value();
             }
-        } else if (name == "Category") f.category = text_of(c);
-        else if (name == "PdoMapping") f.pdo_mapping = text_of(c);
-        else if (name == "SafetyMapping") f.safety_mapping = text_of(c);
-        else if (name == "Attribute") f.attribute = u32(c);
-        else if (name == "Transition") f.transition = text_of(c);
-        else if (name == "SdoAccess") f.sdo_access = text_of(c);
-        else if (name == "Backup") f.backup = i32(c);
-        else if (name == "Setting") f.setting = i32(c);
+        } else if (is(name, "Category")) f.category = text_of(c);
+        else if (is(name, "PdoMapping")) f.pdo_mapping = text_of(c);
+        else if (is(name, "SafetyMapping")) f.safety_mapping = text_of(c);
+        else if (is(name, "Attribute")) f.attribute = u32(c);
+        else if (is(name, "Transition")) f.transition = text_of(c);
+        else if (is(name, "SdoAccess")) f.sdo_access = text_of(c);
+        else if (is(name, "Backup")) f.backup = i32(c);
+        else if (is(name, "Setting")) f.setting = i32(c);
         else keep(f.extras, c, previous);
     });
 }
@@ -890,22 +899,22 @@ void Reader::read_object_info(ObjectInfo& info, const pugi::xml_node n, std::siz
     for (const auto a : n.attributes()) keep(info.extras, a);
     if (depth < 8) reserve_for(info.sub_items, n, "SubItem");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "DefaultString") info.default_string = c.text().get();
-        else if (name == "MinData") info.min_data = hex(c);
-        else if (name == "MaxData") info.max_data = hex(c);
-        else if (name == "DefaultData") info.default_data = hex(c);
-        else if (name == "MinValue") info.min_value = number(c);
-        else if (name == "MaxValue") info.max_value = number(c);
-        else if (name == "DefaultValue") info.default_value = number(c);
-        else if (name == "DisplayName") info.display_name = text_of(c);
-        else if (name == "Unit") info.unit = u32(c);
-        else if (name == "SubItem" && depth < 8) {
+        if (is(name, "DefaultString")) info.default_string = c.text().get();
+        else if (is(name, "MinData")) info.min_data = hex(c);
+        else if (is(name, "MaxData")) info.max_data = hex(c);
+        else if (is(name, "DefaultData")) info.default_data = hex(c);
+        else if (is(name, "MinValue")) info.min_value = number(c);
+        else if (is(name, "MaxValue")) info.max_value = number(c);
+        else if (is(name, "DefaultValue")) info.default_value = number(c);
+        else if (is(name, "DisplayName")) info.display_name = text_of(c);
+        else if (is(name, "Unit")) info.unit = u32(c);
+        else if (is(name, "SubItem") && depth < 8) {
             ObjectSubItemInfo& sub = info.sub_items.emplace_back();
             sub.pos = pos_of(c);
             bool has_info = false;
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "Name") sub.name = text_of(cc);
-                else if (cn == "Info") {
+                if (is(cn, "Name")) sub.name = text_of(cc);
+                else if (is(cn, "Info")) {
                     if (has_info) sub.info = {};  // a repeated Info replaces the first
                     read_object_info(sub.info, cc, depth + 1);
                     has_info = true;
@@ -920,26 +929,26 @@ void Reader::read_object(Object& o, const pugi::xml_node n) {
     for (const auto a : n.attributes()) keep(o.extras, a);
     bool has_index = false;
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Index") {
+        if (is(name, "Index")) {
             has_index = true;
             o.index = u32(c).value_or(0);
             o.index_pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "DependOnSlot") o.index_depend_on_slot = boolean(a, c);
-                else if (an == "DependOnSlotGroup") o.index_depend_on_slot_group = boolean(a, c);
-                else if (an == "OverwrittenByModule") o.index_overwritten_by_module = boolean(a, c);
+                if (is(an, "DependOnSlot")) o.index_depend_on_slot = boolean(a, c);
+                else if (is(an, "DependOnSlotGroup")) o.index_depend_on_slot_group = boolean(a, c);
+                else if (is(an, "OverwrittenByModule")) o.index_overwritten_by_module = boolean(a, c);
             }
-        } else if (name == "Name") o.names.push_back(localized(c));
-        else if (name == "Comment") o.comments.push_back(localized(c));
-        else if (name == "Type") {
+        } else if (is(name, "Name")) o.names.push_back(localized(c));
+        else if (is(name, "Comment")) o.comments.push_back(localized(c));
+        else if (is(name, "Type")) {
             o.type = text_of(c);
             o.type_pos = pos_of(c);
-        } else if (name == "BitSize") {
+        } else if (is(name, "BitSize")) {
             o.bit_size = u64(c).value_or(0);
             o.bit_size_pos = pos_of(c);
-        } else if (name == "Info") read_object_info(o.info.emplace(), c, 0);
-        else if (name == "Flags") read_flags(o.flags.emplace(), c);
+        } else if (is(name, "Info")) read_object_info(o.info.emplace(), c, 0);
+        else if (is(name, "Flags")) read_flags(o.flags.emplace(), c);
         else keep(o.extras, c, previous);
     });
     if (!has_index) missing("Object", "Index", o.pos);
@@ -949,22 +958,22 @@ void Reader::read_module(Module& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
     for (const auto a : n.attributes()) keep(m.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Type") {
+        if (is(name, "Type")) {
             m.type = text_of(c);
             m.type_pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
-                if (an == "ModuleIdent") m.module_ident = u32(a, c).value_or(0);
-                else if (an == "ModuleClass") m.module_class = a.value();
-                else if (an == "ModulePdoGroup") m.module_pdo_group = i32(a, c);
+                if (is(an, "ModuleIdent")) m.module_ident = u32(a, c).value_or(0);
+                else if (is(an, "ModuleClass")) m.module_class = a.value();
+                else if (is(an, "ModulePdoGroup")) m.module_pdo_group = i32(a, c);
                 else keep(m.type_extras, a);
             }
-        } else if (name == "Name") m.names.push_back(localized(c));
-        else if (name == "RxPdo") read_pdo(m.rx_pdos.emplace_back(), c, PdoDirection::rx);
-        else if (name == "TxPdo") read_pdo(m.tx_pdos.emplace_back(), c, PdoDirection::tx);
-        else if (name == "Mailbox") read_mailbox(m.mailbox.emplace(), c);
-        else if (name == "Profile") read_profile(m.profile.emplace(), c);
-        else if (name == "DcOpModeName") m.dc_op_mode_name = text_of(c);
+        } else if (is(name, "Name")) m.names.push_back(localized(c));
+        else if (is(name, "RxPdo")) read_pdo(m.rx_pdos.emplace_back(), c, PdoDirection::rx);
+        else if (is(name, "TxPdo")) read_pdo(m.tx_pdos.emplace_back(), c, PdoDirection::tx);
+        else if (is(name, "Mailbox")) read_mailbox(m.mailbox.emplace(), c);
+        else if (is(name, "Profile")) read_profile(m.profile.emplace(), c);
+        else if (is(name, "DcOpModeName")) m.dc_op_mode_name = text_of(c);
         else if (!read_image(m.images, c, name)) keep(m.extras, c, previous);
     });
 }
@@ -973,34 +982,34 @@ void Reader::read_slot(Slot& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "SlotGroup") s.slot_group = u32(a, n);
-        else if (an == "MinInstances") s.min_instances = u32(a, n).value_or(0);
-        else if (an == "MaxInstances") s.max_instances = u32(a, n).value_or(0);
-        else if (an == "SlotPdoIncrement") s.slot_pdo_increment = u32(a, n);
-        else if (an == "SlotGroupPdoIncrement") s.slot_group_pdo_increment = u32(a, n);
-        else if (an == "SlotIndexIncrement") s.slot_index_increment = u32(a, n);
-        else if (an == "SlotGroupIndexIncrement") s.slot_group_index_increment = u32(a, n);
-        else if (an == "Default") s.default_ident = u32(a, n);
-        else if (an == "Fallback") s.fallback = u32(a, n);
+        if (is(an, "SlotGroup")) s.slot_group = u32(a, n);
+        else if (is(an, "MinInstances")) s.min_instances = u32(a, n).value_or(0);
+        else if (is(an, "MaxInstances")) s.max_instances = u32(a, n).value_or(0);
+        else if (is(an, "SlotPdoIncrement")) s.slot_pdo_increment = u32(a, n);
+        else if (is(an, "SlotGroupPdoIncrement")) s.slot_group_pdo_increment = u32(a, n);
+        else if (is(an, "SlotIndexIncrement")) s.slot_index_increment = u32(a, n);
+        else if (is(an, "SlotGroupIndexIncrement")) s.slot_group_index_increment = u32(a, n);
+        else if (is(an, "Default")) s.default_ident = u32(a, n);
+        else if (is(an, "Fallback")) s.fallback = u32(a, n);
         else keep(s.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Name") s.names.push_back(localized(c));
-        else if (name == "ModuleIdent") {
+        if (is(name, "Name")) s.names.push_back(localized(c));
+        else if (is(name, "ModuleIdent")) {
             SlotModuleIdent id;
             id.pos = pos_of(c);
             id.value = u32(c).value_or(0);
             for (const auto a : c.attributes())
-                if (std::string_view(a.name()) == "Default") id.default_ident = u32(a, c);
+                if (is(a.name(), "Default")) id.default_ident = u32(a, c);
             s.module_idents.push_back(id);
-        } else if (name == "ModuleClass") {
+        } else if (is(name, "ModuleClass")) {
             SlotModuleClass mc;
             mc.pos = pos_of(c);
             for (const auto a : c.attributes()) keep(mc.extras, a);
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (cn == "Class") mc.class_name = text_of(cc);
-                else if (cn == "VendorId") mc.vendor_id = u32(cc);
-                else if (cn == "Name") mc.names.push_back(localized(cc));
+                if (is(cn, "Class")) mc.class_name = text_of(cc);
+                else if (is(cn, "VendorId")) mc.vendor_id = u32(cc);
+                else if (is(cn, "Name")) mc.names.push_back(localized(cc));
                 else keep(mc.extras, cc, prev);
             });
             s.module_classes.push_back(std::move(mc));
@@ -1012,16 +1021,16 @@ void Reader::read_slots(Slots& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
     for (const auto a : n.attributes()) {
         const std::string_view an = a.name();
-        if (an == "MaxSlotCount") s.max_slot_count = u32(a, n);
-        else if (an == "MaxSlotGroupCount") s.max_slot_group_count = u32(a, n);
-        else if (an == "SlotPdoIncrement") s.slot_pdo_increment = u32(a, n);
-        else if (an == "SlotGroupPdoIncrement") s.slot_group_pdo_increment = u32(a, n);
-        else if (an == "SlotIndexIncrement") s.slot_index_increment = u32(a, n);
-        else if (an == "SlotGroupIndexIncrement") s.slot_group_index_increment = u32(a, n);
+        if (is(an, "MaxSlotCount")) s.max_slot_count = u32(a, n);
+        else if (is(an, "MaxSlotGroupCount")) s.max_slot_group_count = u32(a, n);
+        else if (is(an, "SlotPdoIncrement")) s.slot_pdo_increment = u32(a, n);
+        else if (is(an, "SlotGroupPdoIncrement")) s.slot_group_pdo_increment = u32(a, n);
+        else if (is(an, "SlotIndexIncrement")) s.slot_index_increment = u32(a, n);
+        else if (is(an, "SlotGroupIndexIncrement")) s.slot_group_index_increment = u32(a, n);
         else keep(s.extras, a);
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (name == "Slot") read_slot(s.slots.emplace_back(), c);
+        if (is(name, "Slot")) read_slot(s.slots.emplace_back(), c);
         else keep(s.extras, c, previous);
     });
 }
