@@ -49,7 +49,14 @@ private:
     }
 
     // ---- scalar values -------------------------------------------------------------------
-    static std::string text_of(const pugi::xml_node node) { return std::string(trim(node.text().get())); }
+    // An element's character data. With parse_embed_pcdata it is the element's own value: one
+    // call instead of the three of text().get(), which only differs for text that is not
+    // embedded (CDATA, text after a comment or a child) and is asked then.
+    static const char* pcdata(const pugi::xml_node n) {
+        const char* value = n.value();
+        return *value ? value : n.text().get();
+    }
+    static std::string text_of(const pugi::xml_node node) { return std::string(trim(pcdata(node))); }
 
     // Where a scalar was read from: named ("Sm@StartAddress", or the element's name) and located
     // only when the value is bad. Building that name and position for every number used to cost
@@ -81,7 +88,7 @@ private:
         }
         return parsed.value;
     }
-    std::optional<Number> number(const pugi::xml_node n) { return number(n.text().get(), ValueSite{n}); }
+    std::optional<Number> number(const pugi::xml_node n) { return number(pcdata(n), ValueSite{n}); }
 
     template <class T>
     std::optional<T> integer(std::string_view text, const ValueSite& site) {
@@ -114,10 +121,10 @@ private:
     std::optional<std::int32_t> i32(const pugi::xml_attribute a, const pugi::xml_node owner) {
         return integer<std::int32_t>(a.value(), ValueSite{owner, a});
     }
-    std::optional<std::uint32_t> u32(const pugi::xml_node n) { return integer<std::uint32_t>(n.text().get(), ValueSite{n}); }
-    std::optional<std::int32_t> i32(const pugi::xml_node n) { return integer<std::int32_t>(n.text().get(), ValueSite{n}); }
-    std::optional<std::int64_t> i64(const pugi::xml_node n) { return integer<std::int64_t>(n.text().get(), ValueSite{n}); }
-    std::optional<std::uint64_t> u64(const pugi::xml_node n) { return integer<std::uint64_t>(n.text().get(), ValueSite{n}); }
+    std::optional<std::uint32_t> u32(const pugi::xml_node n) { return integer<std::uint32_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::int32_t> i32(const pugi::xml_node n) { return integer<std::int32_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::int64_t> i64(const pugi::xml_node n) { return integer<std::int64_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::uint64_t> u64(const pugi::xml_node n) { return integer<std::uint64_t>(pcdata(n), ValueSite{n}); }
 
     std::optional<bool> boolean(std::string_view text, const ValueSite& site) {
         const auto b = parse_boolean(text);
@@ -127,12 +134,12 @@ private:
         return b;
     }
     std::optional<bool> boolean(const pugi::xml_attribute a, const pugi::xml_node owner) { return boolean(a.value(), ValueSite{owner, a}); }
-    std::optional<bool> boolean(const pugi::xml_node n) { return boolean(n.text().get(), ValueSite{n}); }
+    std::optional<bool> boolean(const pugi::xml_node n) { return boolean(pcdata(n), ValueSite{n}); }
 
     HexData hex(const pugi::xml_node n) {
         HexData out;
         out.pos = pos_of(n);
-        const std::string_view raw = trim(n.text().get());
+        const std::string_view raw = trim(pcdata(n));
         if (raw.find_first_of(" \t\n\r") == std::string_view::npos) {
             out.text.assign(raw);
             return out;
@@ -147,7 +154,7 @@ private:
         LocalizedText t;
         t.text = text_of(n);
         t.pos = pos_of(n);
-        for (const auto a : n.attributes()) {
+        for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
             if (is(a.name(), "LcId")) t.lcid = integer<std::uint32_t>(a.value(), ValueSite{n, a, "LcId"});
         }
         return t;
@@ -158,7 +165,7 @@ private:
         e.name = n.name();
         e.after = after;
         e.pos = pos_of(n);
-        for (const auto a : n.attributes()) e.attributes.push_back({a.name(), a.value()});
+        for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) e.attributes.push_back({a.name(), a.value()});
         if (depth >= options_.max_verbatim_depth) {
             if (!depth_reported_) {
                 report(Severity::error, "xml-nesting-depth",
@@ -169,12 +176,14 @@ private:
             return;
         }
         std::string_view previous;
-        for (const auto c : n.children()) {
-            if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) {
+        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
+            const pugi::xml_node_type type = c.type();
+            if (type == pugi::node_pcdata || type == pugi::node_cdata) {
                 e.text += c.value();
-            } else if (c.type() == pugi::node_element) {
+            } else if (type == pugi::node_element) {
+                const std::string_view name = c.name();
                 verbatim(e.children.emplace_back(), c, previous, depth + 1);
-                previous = c.name();
+                previous = name;
             }
         }
         // parse_embed_pcdata stores the text that comes before any child element in the
@@ -188,13 +197,17 @@ private:
     static void keep(Extras& extras, const pugi::xml_attribute a) { extras.attributes.push_back({a.name(), a.value()}); }
 
     // Iterates element children, tracking the name of the previous element for Extras.after.
+    // (pugixml is a shared library: every node access is a call. Walking with first_child /
+    // next_sibling and taking each name once costs four calls and one strlen per child; the
+    // range-for over children() cost seven calls and two.)
     template <class F>
     void for_children(const pugi::xml_node n, F&& f) {
         std::string_view previous;
-        for (const auto c : n.children()) {
+        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
             if (c.type() != pugi::node_element) continue;
-            f(c, std::string_view(c.name()), previous);
-            previous = c.name();
+            const std::string_view name = c.name();
+            f(c, name, previous);
+            previous = name;
         }
     }
 
@@ -271,14 +284,14 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
         read_info(doc.infos.emplace_back(), root);
     } else if (is(name, "EtherCATInfoList")) {
         doc.kind = DocumentKind::ethercat_info_list;
-        for (const auto a : root.attributes()) keep(doc.root_extras, a);
+        for (pugi::xml_attribute a = root.first_attribute(); a; a = a.next_attribute()) keep(doc.root_extras, a);
         for_children(root, [&](const pugi::xml_node c, std::string_view n, std::string_view previous) {
             if (is(n, "EtherCATInfo")) read_info(doc.infos.emplace_back(), c);
             else keep(doc.root_extras, c, previous);
         });
     } else if (is(name, "EtherCATDict")) {
         doc.kind = DocumentKind::ethercat_dict;
-        for (const auto a : root.attributes()) {
+        for (pugi::xml_attribute a = root.first_attribute(); a; a = a.next_attribute()) {
             if (is(a.name(), "Version")) doc.dict_version = a.value();
             else keep(doc.root_extras, a);
         }
@@ -298,7 +311,7 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
 
 void Reader::read_info(EtherCATInfo& info, const pugi::xml_node n) {
     info.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         if (is(a.name(), "Version")) info.version = a.value();
         else keep(info.extras, a);
     }
@@ -308,7 +321,7 @@ void Reader::read_info(EtherCATInfo& info, const pugi::xml_node n) {
         } else if (is(name, "Descriptions")) {
             info.has_descriptions = true;
             info.descriptions_pos = pos_of(c);
-            for (const auto a : c.attributes()) keep(info.descriptions_extras, a);
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) keep(info.descriptions_extras, a);
             for_children(c, [&](const pugi::xml_node d, std::string_view dn, std::string_view dprev) {
                 if (is(dn, "Groups")) {
                     for_children(d, [&](const pugi::xml_node g, std::string_view gn, std::string_view) {
@@ -341,7 +354,7 @@ void Reader::read_info(EtherCATInfo& info, const pugi::xml_node n) {
 
 void Reader::read_vendor(Vendor& v, const pugi::xml_node n) {
     v.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "UniqueName")) v.unique_name = a.value();
         else if (is(an, "FileVersion")) v.file_version = a.value();
@@ -361,7 +374,7 @@ void Reader::read_vendor(Vendor& v, const pugi::xml_node n) {
 
 void Reader::read_group(Group& g, const pugi::xml_node n) {
     g.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "SortOrder")) g.sort_order = i32(a, n);
         else if (is(an, "ParentGroup")) g.parent_group = a.value();
@@ -380,7 +393,7 @@ void Reader::read_group(Group& g, const pugi::xml_node n) {
 void Reader::read_identity(DeviceIdentity& t, const pugi::xml_node n) {
     t.pos = pos_of(n);
     t.text = text_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "ProductCode")) t.product_code = u32(a, n);
         else if (is(an, "RevisionNo")) t.revision_no = u32(a, n);
@@ -393,7 +406,7 @@ void Reader::read_identity(DeviceIdentity& t, const pugi::xml_node n) {
 
 void Reader::read_device(Device& d, const pugi::xml_node n) {
     d.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "Physics")) d.physics = a.value();
         else if (is(an, "Invisible")) d.invisible = boolean(a, n);
@@ -429,7 +442,7 @@ void Reader::read_device(Device& d, const pugi::xml_node n) {
 void Reader::read_sm(SyncManager& sm, const pugi::xml_node n) {
     sm.pos = pos_of(n);
     sm.type = text_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "StartAddress")) sm.start_address = u32(a, n);
         else if (is(an, "ControlByte")) sm.control_byte = u32(a, n);
@@ -450,7 +463,7 @@ void Reader::read_sm(SyncManager& sm, const pugi::xml_node n) {
 void Reader::read_fmmu(Fmmu& f, const pugi::xml_node n) {
     f.pos = pos_of(n);
     f.type = text_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "Sm")) f.sm = u32(a, n);
         else if (is(an, "Su")) f.su = u32(a, n);
@@ -463,7 +476,7 @@ void Reader::read_fmmu(Fmmu& f, const pugi::xml_node n) {
 void Reader::read_su(SyncUnit& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
     s.text = text_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "SeparateSu")) s.separate_su = boolean(a, n);
         else if (is(an, "SeparateFrame")) s.separate_frame = boolean(a, n);
@@ -477,7 +490,7 @@ void Reader::read_su(SyncUnit& s, const pugi::xml_node n) {
 void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
     p.direction = direction;
     p.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "Fixed")) p.fixed = boolean(a, n);
         else if (is(an, "Mandatory")) p.mandatory = boolean(a, n);
@@ -505,7 +518,7 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
             const std::optional<std::uint32_t> index = u32(c);
             p.index = index.value_or(0);
             p.index_invalid = !index;
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "DependOnSlot")) p.index_depend_on_slot = boolean(a, c);
                 else if (is(an, "DependOnSlotGroup")) p.index_depend_on_slot_group = boolean(a, c);
@@ -515,7 +528,7 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
             PdoExclude e;
             e.pos = pos_of(c);
             e.index = u32(c).value_or(0);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "DependOnSlot")) e.depend_on_slot = boolean(a, c);
                 else if (is(an, "DependOnSlotGroup")) e.depend_on_slot_group = boolean(a, c);
@@ -531,7 +544,7 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
 
 void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
     e.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "Fixed")) e.fixed = boolean(a, n);
         else keep(e.extras, a);
@@ -545,7 +558,7 @@ void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
             e.index = index.value_or(0);
             e.index_invalid = !index;
             e.index_pos = pos_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "DependOnSlot")) e.index_depend_on_slot = boolean(a, c);
                 else if (is(an, "DependOnSlotGroup")) e.index_depend_on_slot_group = boolean(a, c);
@@ -560,7 +573,7 @@ void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
         else if (is(name, "DataType")) {
             e.data_type = text_of(c);
             e.data_type_pos = pos_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "DScale")) e.data_type_dscale = a.value();
                 else if (is(an, "SwapData")) e.data_type_swap_data = boolean(a, c);
@@ -573,7 +586,7 @@ void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
 
 void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
     cmd.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "Fixed")) cmd.fixed = boolean(a, n);
         else if (is(an, "CompleteAccess")) cmd.complete_access = boolean(a, n);
@@ -585,7 +598,7 @@ void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
         if (is(name, "Transition")) cmd.transitions.push_back(Transition{text_of(c), pos_of(c)});
         else if (is(name, "Index")) {
             cmd.index = u32(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "DependOnSlot")) cmd.index_depend_on_slot = boolean(a, c);
                 else if (is(an, "DependOnSlotGroup")) cmd.index_depend_on_slot_group = boolean(a, c);
@@ -596,7 +609,7 @@ void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
         else if (is(name, "Data")) {
             cmd.data = hex(c);
             cmd.has_data = true;
-            for (const auto a : c.attributes())
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute())
                 if (is(a.name(), "AdaptAutomatically")) cmd.data_adapt_automatically = boolean(a, c);
         } else if (is(name, "Comment")) cmd.comment = text_of(c);
         else keep(cmd.extras, c, previous);
@@ -605,7 +618,7 @@ void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
 
 void Reader::read_coe(CoeProtocol& coe, const pugi::xml_node n) {
     coe.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "SdoInfo")) coe.sdo_info = boolean(a, n);
         else if (is(an, "PdoAssign")) coe.pdo_assign = boolean(a, n);
@@ -630,7 +643,7 @@ void Reader::read_coe(CoeProtocol& coe, const pugi::xml_node n) {
 
 void Reader::read_mailbox(Mailbox& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "DataLinkLayer")) m.data_link_layer = boolean(a, n);
         else if (is(an, "RealTimeMode")) m.real_time_mode = boolean(a, n);
@@ -642,7 +655,7 @@ void Reader::read_mailbox(Mailbox& m, const pugi::xml_node n) {
         } else if (is(name, "EoE")) {
             EoeProtocol eoe;
             eoe.pos = pos_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "IP")) eoe.ip = boolean(a, c);
                 else if (is(an, "MAC")) eoe.mac = boolean(a, c);
@@ -657,7 +670,7 @@ void Reader::read_mailbox(Mailbox& m, const pugi::xml_node n) {
         } else if (is(name, "SoE")) {
             SoeProtocol soe;
             soe.pos = pos_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "ChannelCount")) soe.channel_count = i32(a, c);
                 else if (is(an, "DriveFollowsBit3Support")) soe.drive_follows_bit3_support = boolean(a, c);
@@ -671,7 +684,7 @@ void Reader::read_mailbox(Mailbox& m, const pugi::xml_node n) {
         } else if (is(name, "AoE")) {
             AoeProtocol aoe;
             aoe.pos = pos_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "AdsRouter")) aoe.ads_router = boolean(a, c);
                 else if (is(an, "GenerateOwnNetId")) aoe.generate_own_net_id = boolean(a, c);
@@ -686,7 +699,7 @@ void Reader::read_mailbox(Mailbox& m, const pugi::xml_node n) {
         } else if (is(name, "FoE") || is(name, "VoE")) {
             PlainProtocol p;
             p.pos = pos_of(c);
-            for (const auto a : c.attributes()) keep(p.extras, a);
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) keep(p.extras, a);
             for_children(c, [&](const pugi::xml_node cc, std::string_view, std::string_view prev) { keep(p.extras, cc, prev); });
             (is(name, "FoE") ? m.foe : m.voe) = std::move(p);
         } else {
@@ -699,7 +712,7 @@ DcTime Reader::read_dc_time(const pugi::xml_node n) {
     DcTime t;
     t.pos = pos_of(n);
     t.value = i64(n).value_or(0);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "Factor")) t.factor = i32(a, n);
         else if (is(an, "Input")) t.input = boolean(a, n);
@@ -711,7 +724,7 @@ DcTime Reader::read_dc_time(const pugi::xml_node n) {
 
 void Reader::read_op_mode(DcOpMode& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
-    for (const auto a : n.attributes()) keep(m.extras, a);
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(m.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "Name")) m.name = text_of(c);
         else if (is(name, "Desc")) m.desc = text_of(c);
@@ -731,7 +744,7 @@ void Reader::read_op_mode(DcOpMode& m, const pugi::xml_node n) {
 
 void Reader::read_dc(Dc& dc, const pugi::xml_node n) {
     dc.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "UnknownFRMW")) dc.unknown_frmw = boolean(a, n);
         else if (is(an, "Unknown64Bit")) dc.unknown_64bit = boolean(a, n);
@@ -748,7 +761,7 @@ void Reader::read_dc(Dc& dc, const pugi::xml_node n) {
 
 void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
     e.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         if (is(a.name(), "AssignToPdi")) e.assign_to_pdi = boolean(a, n);
         else keep(e.extras, a);
     }
@@ -762,7 +775,7 @@ void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
         else if (is(name, "Category")) {
             EepromCategory cat;
             cat.pos = pos_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 if (is(a.name(), "PreserveOnlineData")) cat.preserve_online_data = boolean(a, c);
                 else keep(cat.extras, a);
             }
@@ -771,7 +784,7 @@ void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
                     cat.cat_no = u32(cc).value_or(0);
                     cat.cat_no_pos = pos_of(cc);
                 } else if (is(cn, "Data")) cat.data = hex(cc);
-                else if (is(cn, "DataString")) cat.data_string = cc.text().get();
+                else if (is(cn, "DataString")) cat.data_string = pcdata(cc);
                 else if (is(cn, "DataUINT")) cat.data_uint = u64(cc);
                 else if (is(cn, "DataUDINT")) cat.data_udint = u64(cc);
                 else keep(cat.extras, cc, prev);
@@ -783,7 +796,7 @@ void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
 
 void Reader::read_profile(Profile& p, const pugi::xml_node n) {
     p.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         if (is(a.name(), "Channel")) p.channel = i32(a, n);
         else keep(p.extras, a);
     }
@@ -798,7 +811,7 @@ void Reader::read_profile(Profile& p, const pugi::xml_node n) {
 
 void Reader::read_dictionary(Dictionary& d, const pugi::xml_node n) {
     d.pos = pos_of(n);
-    for (const auto a : n.attributes()) keep(d.extras, a);
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(d.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "DataTypes")) {
             reserve_for(d.data_types, c, "DataType");
@@ -818,7 +831,7 @@ void Reader::read_dictionary(Dictionary& d, const pugi::xml_node n) {
 
 void Reader::read_data_type(DataType& t, const pugi::xml_node n) {
     t.pos = pos_of(n);
-    for (const auto a : n.attributes()) keep(t.extras, a);
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(t.extras, a);
     reserve_for(t.sub_items, n, "SubItem");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "Index")) t.index = u32(c);
@@ -852,7 +865,7 @@ void Reader::read_data_type(DataType& t, const pugi::xml_node n) {
 
 void Reader::read_type_sub_item(DataTypeSubItem& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
-    for (const auto a : n.attributes()) keep(s.extras, a);
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(s.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "SubIdx")) s.subindex = u32(c);
         else if (is(name, "Name")) s.name = text_of(c);
@@ -861,7 +874,7 @@ void Reader::read_type_sub_item(DataTypeSubItem& s, const pugi::xml_node n) {
         else if (is(name, "Comment")) s.comments.push_back(localized(c));
         else if (is(name, "BitSize")) s.bit_size = u64(c).value_or(0);
         else if (is(name, "BitOffs")) s.bit_offset = u64(c).value_or(0);
-        else if (is(name, "DefaultString")) s.default_string = c.text().get();
+        else if (is(name, "DefaultString")) s.default_string = pcdata(c);
         else if (is(name, "DefaultData")) s.default_data = hex(c);
         else if (is(name, "MinValue")) s.min_value = number(c);
         else if (is(name, "MaxValue")) s.max_value = number(c);
@@ -873,11 +886,11 @@ void Reader::read_type_sub_item(DataTypeSubItem& s, const pugi::xml_node n) {
 
 void Reader::read_flags(ObjectFlags& f, const pugi::xml_node n) {
     f.pos = pos_of(n);
-    for (const auto a : n.attributes()) keep(f.extras, a);
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(f.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "Access")) {
             f.access = text_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "ReadRestrictions")) f.access_read_restrictions = a.value();
                 else if (is(an, "WriteRestrictions")) f.access_write_restrictions = a.value();
@@ -896,10 +909,10 @@ void Reader::read_flags(ObjectFlags& f, const pugi::xml_node n) {
 
 void Reader::read_object_info(ObjectInfo& info, const pugi::xml_node n, std::size_t depth) {
     info.pos = pos_of(n);
-    for (const auto a : n.attributes()) keep(info.extras, a);
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(info.extras, a);
     if (depth < 8) reserve_for(info.sub_items, n, "SubItem");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (is(name, "DefaultString")) info.default_string = c.text().get();
+        if (is(name, "DefaultString")) info.default_string = pcdata(c);
         else if (is(name, "MinData")) info.min_data = hex(c);
         else if (is(name, "MaxData")) info.max_data = hex(c);
         else if (is(name, "DefaultData")) info.default_data = hex(c);
@@ -926,14 +939,14 @@ void Reader::read_object_info(ObjectInfo& info, const pugi::xml_node n, std::siz
 
 void Reader::read_object(Object& o, const pugi::xml_node n) {
     o.pos = pos_of(n);
-    for (const auto a : n.attributes()) keep(o.extras, a);
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(o.extras, a);
     bool has_index = false;
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "Index")) {
             has_index = true;
             o.index = u32(c).value_or(0);
             o.index_pos = pos_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "DependOnSlot")) o.index_depend_on_slot = boolean(a, c);
                 else if (is(an, "DependOnSlotGroup")) o.index_depend_on_slot_group = boolean(a, c);
@@ -956,12 +969,12 @@ void Reader::read_object(Object& o, const pugi::xml_node n) {
 
 void Reader::read_module(Module& m, const pugi::xml_node n) {
     m.pos = pos_of(n);
-    for (const auto a : n.attributes()) keep(m.extras, a);
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(m.extras, a);
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "Type")) {
             m.type = text_of(c);
             m.type_pos = pos_of(c);
-            for (const auto a : c.attributes()) {
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
                 const std::string_view an = a.name();
                 if (is(an, "ModuleIdent")) m.module_ident = u32(a, c).value_or(0);
                 else if (is(an, "ModuleClass")) m.module_class = a.value();
@@ -980,7 +993,7 @@ void Reader::read_module(Module& m, const pugi::xml_node n) {
 
 void Reader::read_slot(Slot& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "SlotGroup")) s.slot_group = u32(a, n);
         else if (is(an, "MinInstances")) s.min_instances = u32(a, n).value_or(0);
@@ -999,13 +1012,13 @@ void Reader::read_slot(Slot& s, const pugi::xml_node n) {
             SlotModuleIdent id;
             id.pos = pos_of(c);
             id.value = u32(c).value_or(0);
-            for (const auto a : c.attributes())
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute())
                 if (is(a.name(), "Default")) id.default_ident = u32(a, c);
             s.module_idents.push_back(id);
         } else if (is(name, "ModuleClass")) {
             SlotModuleClass mc;
             mc.pos = pos_of(c);
-            for (const auto a : c.attributes()) keep(mc.extras, a);
+            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) keep(mc.extras, a);
             for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
                 if (is(cn, "Class")) mc.class_name = text_of(cc);
                 else if (is(cn, "VendorId")) mc.vendor_id = u32(cc);
@@ -1019,7 +1032,7 @@ void Reader::read_slot(Slot& s, const pugi::xml_node n) {
 
 void Reader::read_slots(Slots& s, const pugi::xml_node n) {
     s.pos = pos_of(n);
-    for (const auto a : n.attributes()) {
+    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
         const std::string_view an = a.name();
         if (is(an, "MaxSlotCount")) s.max_slot_count = u32(a, n);
         else if (is(an, "MaxSlotGroupCount")) s.max_slot_group_count = u32(a, n);
