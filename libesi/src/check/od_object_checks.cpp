@@ -83,8 +83,10 @@ void check_lengths(RuleContext& context, const EntryValues& values, const EntryN
     if (bits == 0) return;
     const std::uint64_t bytes = (bits + 7) / 8;
     // Strings and byte arrays may be given shorter than their maximum length.
+    // (Only a name starting with ARRAY can parse as an array; the test spares a parse per entry.)
     const bool variable = !basic || basic->type_class == TypeClass::visible_string || basic->type_class == TypeClass::octet_string ||
-                          basic->type_class == TypeClass::unicode_string || parse_type_name(type_name).kind == TypeName::Kind::array;
+                          basic->type_class == TypeClass::unicode_string ||
+                          (trim(type_name).starts_with("ARRAY") && parse_type_name(type_name).kind == TypeName::Kind::array);
     const auto check = [&](const std::optional<HexData>& data, std::string_view element) {
         // Empty data (<DefaultData/>) gives no value at all.
         if (!data || !data->valid() || data->text.empty()) return;
