@@ -75,6 +75,12 @@ ParsedNumber parse_number(std::string_view text) {
         result.error = NumberError::no_digits;
         return result;
     }
+    // value * base + digit overflows when value exceeds max / base, or equals it and the digit
+    // exceeds max % base. The limits are constants per base: a 64-bit division per digit cost
+    // more time than the rest of the loop.
+    constexpr std::uint64_t max = std::numeric_limits<std::uint64_t>::max();
+    const std::uint64_t limit = base == 16 ? max / 16 : max / 10;
+    const unsigned last_digit = base == 16 ? static_cast<unsigned>(max % 16) : static_cast<unsigned>(max % 10);
     std::uint64_t value = 0;
     for (char c : text) {
         const int digit = base == 16 ? hex_digit(c) : (c >= '0' && c <= '9' ? c - '0' : -1);
@@ -82,7 +88,7 @@ ParsedNumber parse_number(std::string_view text) {
             result.error = NumberError::bad_digit;
             return result;
         }
-        if (value > (std::numeric_limits<std::uint64_t>::max() - static_cast<unsigned>(digit)) / base) {
+        if (value > limit || (value == limit && static_cast<unsigned>(digit) > last_digit)) {
             result.error = NumberError::overflow;
             return result;
         }
