@@ -64,6 +64,10 @@ ResolvedType resolve(const Types& types, std::string_view type_name) {
                 continue;
             }
             // A DataType named like a basic type (Beckhoff lists "UINT" with its BitSize).
+            if (const BasicType* basic = find_basic_type(current)) {  // parse_type_name's answer, without its copies
+                out.basic = basic;
+                return out;
+            }
             const TypeName parsed = parse_type_name(current);
             if (parsed.kind == TypeName::Kind::basic) out.basic = parsed.basic;
             else if (parsed.kind == TypeName::Kind::string) out.basic = parsed.basic;
@@ -73,6 +77,12 @@ ResolvedType resolve(const Types& types, std::string_view type_name) {
                 out.array_elements = parsed.element_count();
                 out.element_type = parsed.element;
             }
+            return out;
+        }
+        if (const BasicType* basic = find_basic_type(current)) {  // parse_type_name's answer, without its copies
+            out.known = true;
+            out.basic = basic;
+            if (!out.definition) out.bit_size = basic->bit_size;
             return out;
         }
         const TypeName parsed = parse_type_name(current);
@@ -102,13 +112,22 @@ ResolvedType resolve(const Types& types, std::string_view type_name) {
 
 }  // namespace
 
-DataTypeIndex::DataTypeIndex(const Dictionary* dictionary) : dictionary_(dictionary) {
+DataTypeIndex::DataTypeIndex(const Dictionary* dictionary) : dictionary_(dictionary), basic_named_(basic_types().size(), nullptr) {
     if (!dictionary) return;
     by_name_.reserve(dictionary->data_types.size());
-    for (const auto& t : dictionary->data_types) by_name_.emplace(std::string_view(t.name), &t);  // the first of a name wins
+    for (const auto& t : dictionary->data_types) {
+        // The first of a name wins, in both tables.
+        if (const BasicType* basic = find_basic_type(t.name)) {
+            const DataType*& slot = basic_named_[static_cast<std::size_t>(basic - basic_types().data())];
+            if (!slot) slot = &t;
+        } else {
+            by_name_.emplace(std::string_view(t.name), &t);
+        }
+    }
 }
 
 const DataType* DataTypeIndex::find(std::string_view name) const {
+    if (const BasicType* basic = find_basic_type(name)) return basic_named_[static_cast<std::size_t>(basic - basic_types().data())];
     const auto it = by_name_.find(name);
     return it == by_name_.end() ? nullptr : it->second;
 }
@@ -142,10 +161,11 @@ void add_array_elements(const Types& types, const ResolvedType& array, const Dat
     // Guard against absurd element counts in hostile files: a CoE object has at most 255 sub-indices.
     const std::uint64_t count = std::min<std::uint64_t>(array.array_elements, 255);
     const std::int64_t first = array.array_lower_bound > 0 ? array.array_lower_bound : 1;
+    layout.entries.reserve(layout.entries.size() + count);
     for (std::uint64_t i = 0; i < count; ++i) {
-        ObjectEntry e;
         const std::int64_t sub = first + static_cast<std::int64_t>(i);
         if (sub > 255) break;
+        ObjectEntry& e = layout.entries.emplace_back();
         e.subindex = static_cast<std::uint32_t>(sub);
         e.name = subindex_name(e.subindex);
         e.type = array.element_type;
@@ -154,7 +174,6 @@ void add_array_elements(const Types& types, const ResolvedType& array, const Dat
         e.bit_offset = offset + i * element_bits;
         e.flags = flags;
         e.type_item = item;
-        layout.entries.push_back(std::move(e));
     }
 }
 
@@ -167,6 +186,7 @@ ObjectLayout build_layout(const Types& types, const Object& object) {
     if (type.is_structure && type.definition) {
         bool has_array_item = false;
         std::uint32_t next_subindex = 0;
+        layout.entries.reserve(type.definition->sub_items.size());  // array items reserve their elements
         for (const auto& item : type.definition->sub_items) {
             const ResolvedType item_type = resolve(types, item.type);
             const ObjectFlags* flags = item.flags ? &*item.flags : object_flags;
@@ -177,7 +197,7 @@ ObjectLayout build_layout(const Types& types, const Object& object) {
                 if (layout.entries.size() > before) next_subindex = layout.entries.back().subindex + 1;
                 continue;
             }
-            ObjectEntry e;
+            ObjectEntry& e = layout.entries.emplace_back();
             e.subindex = item.subindex.value_or(next_subindex);
             next_subindex = e.subindex + 1;
             e.name = item.name;
@@ -187,7 +207,6 @@ ObjectLayout build_layout(const Types& types, const Object& object) {
             e.bit_offset = item.bit_offset;
             e.flags = flags;
             e.type_item = &item;
-            layout.entries.push_back(std::move(e));
         }
         layout.code = has_array_item ? ObjectCode::array : ObjectCode::record;
     } else if (type.is_array) {

@@ -44,6 +44,10 @@ public:
 private:
     const Dictionary* dictionary_;
     std::unordered_map<std::string_view, const DataType*> by_name_;
+    // DataTypes named like a basic type (Beckhoff lists "UINT" with its BitSize), by the basic
+    // type's place in basic_types(): most names a layout resolves are basic, and this spares
+    // them the hash lookup.
+    std::vector<const DataType*> basic_named_;
 };
 
 [[nodiscard]] ResolvedType resolve_type(const DataTypeIndex& types, std::string_view type_name);
