@@ -3,6 +3,7 @@
 
 #include "esi/xml/reader.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -140,13 +141,17 @@ private:
         HexData out;
         out.pos = pos_of(n);
         const std::string_view raw = trim(pcdata(n));
-        if (raw.find_first_of(" \t\n\r") == std::string_view::npos) {
+        const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+        // Hex data is almost never split over lines. The test for a blank is two compares per
+        // byte (only bytes up to ' ' can be one); find_first_of(" \t\n\r") searched the set
+        // for every byte, some 500 instructions per DefaultData.
+        if (std::none_of(raw.begin(), raw.end(), [&](char c) { return static_cast<unsigned char>(c) <= ' ' && is_space(c); })) {
             out.text.assign(raw);
             return out;
         }
         out.text.reserve(raw.size());
         for (char c : raw)
-            if (c != ' ' && c != '\t' && c != '\n' && c != '\r') out.text.push_back(c);
+            if (!is_space(c)) out.text.push_back(c);
         return out;
     }
 
