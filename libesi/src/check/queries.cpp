@@ -1,5 +1,7 @@
 #include "check/queries.hpp"
 
+#include "check/od_values.hpp"
+
 namespace esi::rules {
 
 std::vector<const Device*> all_devices(const EsiDocument& document) {
@@ -71,11 +73,7 @@ std::optional<std::uint64_t> default_integer(const ObjectEntry& entry) {
     if (!entry.info) return std::nullopt;
     if (entry.info->default_value) return entry.info->default_value->bits();
     if (!entry.info->default_data) return std::nullopt;
-    const auto bytes = entry.info->default_data->bytes();
-    if (!bytes || bytes->empty() || bytes->size() > 8) return std::nullopt;
-    std::uint64_t value = 0;
-    for (std::size_t i = bytes->size(); i-- > 0;) value = (value << 8) | (*bytes)[i];
-    return value;
+    return little_endian_pattern(*entry.info->default_data);
 }
 
 SourcePos default_pos(const ObjectEntry& entry) {
