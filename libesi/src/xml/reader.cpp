@@ -209,12 +209,15 @@ private:
     // (pugixml is a shared library: every node access is a call. Walking with first_child /
     // next_sibling and taking each name once costs four calls and one strlen per child; the
     // range-for over children() cost seven calls and two.)
+    // Element children are the ones with a name: with the parse options used, an element's
+    // other children are character data (pcdata, cdata), which has none; comments, processing
+    // instructions and declarations are not parsed. So the name tells without a type() call.
     template <class F>
     void for_children(const pugi::xml_node n, F&& f) {
         std::string_view previous;
         for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
-            if (c.type() != pugi::node_element) continue;
             const std::string_view name = c.name();
+            if (name.empty()) continue;
             f(c, name, previous);
             previous = name;
         }
@@ -1121,6 +1124,8 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     // as written, for quoting lines and finding suppressions.
     std::string buffer = source->text();
     pugi::xml_document xml;
+    // No comments, processing instructions or declarations in the tree (for_children relies on
+    // it); text before an element's first child is stored in the element itself.
     const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata;
     const pugi::xml_parse_result parsed = xml.load_buffer_inplace(buffer.data(), buffer.size(), parse_options, pugi::encoding_utf8);
     if (!parsed) {
