@@ -23,8 +23,9 @@ namespace {
 // Element and attribute names are compared with literals about ten times per element. This
 // compares the length, then a memcmp whose length is known at compile time, which the compiler
 // turns into a load or two; string_view's operator== was an out-of-line call plus a memcmp call.
+// (always_inline: GCC otherwise keeps some instances out of line, a call per compare.)
 template <std::size_t N>
-bool is(std::string_view name, const char (&literal)[N]) {
+[[gnu::always_inline]] inline bool is(std::string_view name, const char (&literal)[N]) {
     return name.size() == N - 1 && std::memcmp(name.data(), literal, N - 1) == 0;
 }
 
@@ -923,7 +924,9 @@ void Reader::read_flags(ObjectFlags& f, const pugi::xml_node n) {
 void Reader::read_object_info(ObjectInfo& info, const pugi::xml_node n, std::size_t depth) {
     info.pos = pos_of(n);
     for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(info.extras, a);
-    if (depth < 8) reserve_for(info.sub_items, n, "SubItem");
+    // Only an object's own Info lists SubItems in practice; the Infos of sub-items are leaves, and
+    // counting their children cost a lookup each.
+    if (depth == 0) reserve_for(info.sub_items, n, "SubItem");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "DefaultString")) info.default_string = pcdata(c);
         else if (is(name, "MinData")) info.min_data = hex(c);
