@@ -171,7 +171,16 @@ bool is_valid_utf8(std::string_view text, std::size_t* first_bad) {
     const std::size_t n = text.size();
     std::size_t i = 0;
     while (i < n) {
-        // Fast path over ASCII, eight bytes at a time.
+        // Fast path over ASCII, sixteen bytes (two words tested at once) at a time: every UTF-8
+        // file is validated whole before parsing, and the loop overhead was half the cost.
+        while (i + 16 <= n) {
+            std::uint64_t first = 0;
+            std::uint64_t second = 0;
+            std::memcpy(&first, p + i, 8);
+            std::memcpy(&second, p + i + 8, 8);
+            if ((first | second) & 0x8080808080808080ull) break;
+            i += 16;
+        }
         while (i + 8 <= n) {
             std::uint64_t chunk = 0;
             std::memcpy(&chunk, p + i, 8);
