@@ -85,7 +85,7 @@ const DataType* TypeIndex::find(std::string_view name) const { return data_types
 TypeNameStatus TypeIndex::status(std::string_view name, std::string_view* culprit) const {
     name = trim(name);
     for (int depth = 0; depth < 8; ++depth) {
-        if (find(name) || find_basic_type(name)) return TypeNameStatus::resolved;
+        if (find_basic_type(name) || find(name)) return TypeNameStatus::resolved;
         const TypeName parsed = parse_type_name(name);
         if (parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string) return TypeNameStatus::resolved;
         if (parsed.kind == TypeName::Kind::array) {

@@ -523,7 +523,6 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
         else keep(p.extras, a);
     }
     reserve_for(p.entries, n, "Entry");
-    reserve_for(p.excludes, n, "Exclude");
     bool has_index = false;
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "Index")) {
