@@ -185,6 +185,9 @@ private:
             }
             return;
         }
+        std::size_t elements = 0;  // reserved up front: an XmlElement is 152 bytes to move on growth
+        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) elements += c.name()[0] != '\0';
+        e.children.reserve(elements);
         std::string_view previous;
         for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
             const pugi::xml_node_type type = c.type();
