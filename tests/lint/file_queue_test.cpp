@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <thread>
 #include <vector>
@@ -7,6 +8,8 @@
 #include "lint/file_queue.hpp"
 
 namespace {
+
+constexpr std::uintmax_t MiB = 1 << 20;
 
 std::vector<std::size_t> drain(esi::FileQueue& queue, unsigned worker) {
     std::vector<std::size_t> taken;
@@ -25,10 +28,15 @@ TEST(FileQueue, OneWorkerTakesTheLargestFilesFirst) {
 }
 
 TEST(FileQueue, OtherWorkersTakeSmallFilesOnlySmallestFirst) {
-    // Budget 1000: files over 125 bytes are large and left to worker 0.
-    esi::FileQueue queue({10, 500, 100, 300}, 1000);
+    // Large: over a quarter of the largest (4 MiB) and over 1 MiB.
+    esi::FileQueue queue({MiB / 2, 4 * MiB, MiB, 2 * MiB, MiB + 1}, 5 * MiB);
     EXPECT_EQ(drain(queue, 1), (std::vector<std::size_t>{0, 2}));
-    EXPECT_EQ(drain(queue, 0), (std::vector<std::size_t>{1, 3}));
+    EXPECT_EQ(drain(queue, 0), (std::vector<std::size_t>{1, 3, 4}));
+}
+
+TEST(FileQueue, FilesUpToOneMebibyteAreNeverLeftToOneWorker) {
+    esi::FileQueue queue({MiB, 10, MiB / 2}, esi::FileQueue::default_budget({MiB, 10, MiB / 2}));
+    EXPECT_EQ(drain(queue, 1), (std::vector<std::size_t>{1, 2, 0}));
 }
 
 TEST(FileQueue, AFileThatDoesNotFitTheBudgetWaitsForTheOthers) {
@@ -50,14 +58,15 @@ TEST(FileQueue, AFileLargerThanTheBudgetStillRunsAlone) {
 
 TEST(FileQueue, BudgetIsOneAndAQuarterOfTheLargestFileAtLeastOneMebibyte) {
     EXPECT_EQ(esi::FileQueue::default_budget({100, 4'000'000, 5}), 5'000'000u);
-    EXPECT_EQ(esi::FileQueue::default_budget({100, 200}), 1u << 20);
-    EXPECT_EQ(esi::FileQueue::default_budget({}), 1u << 20);
+    EXPECT_EQ(esi::FileQueue::default_budget({100, 200}), MiB);
+    EXPECT_EQ(esi::FileQueue::default_budget({}), MiB);
 }
 
 TEST(FileQueue, WorkersTakeEveryFileOnceAndStayWithinTheBudget) {
     std::vector<std::uintmax_t> sizes;
-    for (unsigned i = 0; i < 300; ++i) sizes.push_back((i * 7919u) % 997u + (i % 50 == 0 ? 4000u : 0u));
+    for (unsigned i = 0; i < 300; ++i) sizes.push_back((i * 7919u) % 997u * 1000u + (i % 50 == 0 ? 4 * MiB : 0u));
     const std::uintmax_t budget = esi::FileQueue::default_budget(sizes);
+    const std::uintmax_t largest = *std::max_element(sizes.begin(), sizes.end());
     esi::FileQueue queue(sizes, budget);
     std::vector<std::atomic<int>> taken(sizes.size());
     std::atomic<std::uintmax_t> in_flight{0};
@@ -67,7 +76,7 @@ TEST(FileQueue, WorkersTakeEveryFileOnceAndStayWithinTheBudget) {
         while (const auto file = queue.take(number)) {
             const std::uintmax_t now = in_flight += sizes[*file];
             if (now > budget && now != sizes[*file]) over_budget = true;
-            if (number != 0 && sizes[*file] > budget / 8) large_elsewhere = true;
+            if (number != 0 && sizes[*file] > std::max<std::uintmax_t>(largest / 4, MiB)) large_elsewhere = true;
             ++taken[*file];
             std::this_thread::yield();
             in_flight -= sizes[*file];

@@ -6,6 +6,8 @@
 namespace esi {
 
 FileQueue::FileQueue(std::vector<std::uintmax_t> sizes, std::uintmax_t budget) : sizes_(std::move(sizes)), budget_(budget) {
+    const std::uintmax_t largest = sizes_.empty() ? 0 : *std::max_element(sizes_.begin(), sizes_.end());
+    large_limit_ = std::max<std::uintmax_t>(largest / 4, std::uintmax_t{1} << 20);
     std::vector<std::size_t> order(sizes_.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     // Largest first; equal sizes keep their input order.

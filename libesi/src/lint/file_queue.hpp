@@ -7,13 +7,15 @@
 // 4 x the largest file + 30 MB (issue 2 §6). So:
 // - the input bytes in flight are bounded by a budget (a file larger than the budget may still
 //   run, alone);
-// - large files (over an eighth of the budget) are linted by worker 0 only, largest first; the
-//   other workers take the small files, smallest first. Memory a thread frees stays with that
-//   thread's malloc arena (glibc keeps one per thread and does not hand freed pages back
-//   cheaply), so large files spread over two workers left two arenas of a large file's size:
-//   with -j 2 the corpus peaked at 50-56 MB with the budget alone, 45 MB with a quarter of it as
-//   the limit for small files and 40 MB with an eighth. Returning the pages after each large
-//   file (malloc_trim) kept 40 MB too, but made the run half again as slow (page faults).
+// - large files (over a quarter of the largest and over 1 MiB) are linted by worker 0 only,
+//   largest first; the other workers take the small files, smallest first. Memory a thread
+//   frees stays with that thread's malloc arena (glibc keeps one per thread and does not hand
+//   freed pages back cheaply), so large files spread over two workers left two arenas of a
+//   large file's size: with -j 2 the corpus (largest 3.9 MB) peaked at 50-56 MB with the budget
+//   alone, 45 MB with 1.2 MB as the limit for small files and 40 MB with 1 MiB or less.
+//   Returning the pages after each large file (malloc_trim) kept 40 MB too, but made the run
+//   half again as slow (page faults). Below 1 MiB a file's arena is a few MB, so corpora of
+//   smaller files are linted fully in parallel.
 
 #include <condition_variable>
 #include <cstdint>
@@ -41,10 +43,11 @@ public:
 
 private:
     [[nodiscard]] bool fits(std::size_t file) const;
-    [[nodiscard]] bool large(std::size_t file) const { return sizes_[file] > budget_ / 8; }
+    [[nodiscard]] bool large(std::size_t file) const { return sizes_[file] > large_limit_; }
 
     std::vector<std::uintmax_t> sizes_;
     std::uintmax_t budget_;
+    std::uintmax_t large_limit_;
     std::uintmax_t in_flight_ = 0;
     std::deque<std::size_t> order_;  // largest first
     std::mutex mutex_;
