@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -221,6 +222,43 @@ TEST(MustacheDifferential, FeatureCasesMatchKainjow) {
             EXPECT_EQ(actual, expected.text) << "template: " << c.tmpl;
         }
     }
+}
+
+// Templates strung together at random from tag and text pieces (a fixed seed: the same every
+// run): whatever kainjow renders, the engine renders the same, and what kainjow refuses it
+// refuses too, except partials and inheritance, which it refuses and kainjow renders as nothing.
+TEST(MustacheDifferential, RandomTemplatesMatchKainjow) {
+    const char* pieces[] = {"{{", "}}", "{{{", "}}}", "#", "^", "/", "!", "=", ".", "a", "b", "list", "t", "f", "n", "\n",
+                            "\r\n", "\r", " ", "\t", "&", "{", "}", ">", "x", "{{#list}}", "{{/list}}", "{{#t}}", "{{/t}}",
+                            "{{^f}}", "{{/f}}", "{{a.b}}", "{{.}}", "{{=<% %>=}}", "<%", "%>", "{{!", "{{ #t }}", "{{ /t }}"};
+    const Json view = Json::parse(R"({"a": {"b": "AB", "n": 1}, "b": "B", "list": [{"n": "1"}, {"n": 2, "a": {"b": "inner"}}, "s"],
+                                     "t": true, "f": false, "n": null, "x": []})");
+    cg::ViewArena arena;
+    const cg::ViewValue context = cg::from_json(arena, view);
+    std::mt19937 rng(20261122);
+    std::size_t rendered = 0, refused = 0;
+    for (int i = 0; i < 5000; ++i) {
+        std::string tmpl;
+        const auto length = 1 + rng() % 14;
+        for (unsigned k = 0; k < length; ++k) tmpl += pieces[rng() % std::size(pieces)];
+        const bool html = i % 2 == 1;
+        const auto expected = kainjow_render(tmpl, view, html);
+        const auto parsed = mu::parse(tmpl);
+        if (!parsed.parsed) {
+            if (parsed.error.find("not supported") == std::string::npos) {
+                EXPECT_FALSE(expected.ok) << Json(tmpl).dump() << " refused (" << parsed.error << "), kainjow renders " << Json(expected.text).dump();
+            }
+            ++refused;
+            continue;
+        }
+        ASSERT_TRUE(expected.ok) << Json(tmpl).dump() << " rendered, kainjow refuses: " << expected.error;
+        std::string actual;
+        parsed.parsed->render(context, actual, html ? mu::Escape::html : mu::Escape::none);
+        ASSERT_EQ(actual, expected.text) << Json(tmpl).dump();
+        ++rendered;
+    }
+    EXPECT_GT(rendered, 1000u);
+    EXPECT_GT(refused, 1000u);
 }
 
 }  // namespace

@@ -19,12 +19,13 @@
 //     booleans, null, lists and objects render as nothing;
 //   - an output line that holds only blanks and was touched by a section that rendered is
 //     dropped with its line break (kainjow's line buffer).
-// Standalone lines: a line holding only blanks and one section, inverted-section, end or comment
-// tag written with its sigil right after "{{" ({{#name}}, not {{ #name}}) is removed with its
-// line break, whether the section renders or not (the spec's rule, which kainjow applies only to
-// sections that render). Tags that span lines, and every tag of a template that contains "{{="
-// (set delimiters), get kainjow's rule only, as esi-gen's earlier renderer did; the spec would
-// remove those lines too.
+// Standalone lines are removed from the template text before it is parsed, line by line, as
+// esi-gen did before kainjow saw a template: a line that holds, besides blanks (and CRs at its
+// end), exactly one tag {{#...}}, {{^...}}, {{/...}} or {{!...}} (sigil right after "{{", no other
+// "{{" or "}}" on the line) loses its blanks and line break, whether the section renders or not
+// (the spec's rule, which kainjow applies only to sections that render). The rule looks at lines
+// only, so it also joins such a line inside a comment that spans lines. Templates that contain
+// "{{=" (set delimiters) are parsed as written, with kainjow's rule only, as before.
 
 #include <cstdint>
 #include <optional>

@@ -3,13 +3,15 @@
 //
 // Tags are read the way kainjow reads them: the text between the delimiters is trimmed, its first
 // character gives the kind (# ^ / ! & > =, else a variable) and the rest, trimmed again, is the
-// name; with the default delimiters "{{{" opens an unescaped variable closed by "}}}". Standalone
-// lines are the ones esi-gen removed before it had its own engine (mustache.hpp): a section,
-// inverted-section, end or comment tag alone on its line, with blanks only before and after it,
-// takes the blanks and the line break with it.
+// name; with the default delimiters "{{{" opens an unescaped variable closed by "}}}".
+//
+// Standalone lines are removed from the text before it is parsed, line by line, exactly as
+// esi-gen did before kainjow saw a template (mustache.hpp); error positions are mapped back to
+// the text as written.
 
 #include <algorithm>
 #include <cctype>
+#include <utility>
 
 #include "codegen/mustache.hpp"
 
@@ -42,6 +44,60 @@ SourcePos position_of(std::string_view text, std::size_t offset) {
 
 std::string describe(SourcePos pos) { return std::to_string(pos.line) + ":" + std::to_string(pos.column); }
 
+// The Mustache spec removes a line that holds nothing but a section, inverted-section, end or
+// comment tag; kainjow does so only for sections that render, so a false section would leave an
+// empty line behind. Joining such lines to the next one before parsing gives the spec's output.
+// Templates that set delimiters are left as written.
+using Segments = std::vector<std::pair<std::size_t, std::size_t>>;  // (offset in text, offset in the original)
+
+struct StrippedTemplate {
+    std::string text;
+    Segments segments;  // empty: the text is the original
+};
+
+std::size_t original_offset(const Segments& segments, std::size_t offset) {
+    std::size_t original = offset;
+    for (const auto& [at, from] : segments)
+        if (at <= offset) original = from + (offset - at);
+    return original;
+}
+
+bool is_standalone_tag(std::string_view line) {
+    if (line.size() < 5 || line.substr(0, 2) != "{{" || line.substr(line.size() - 2) != "}}") return false;
+    const char sigil = line[2];
+    if (sigil != '#' && sigil != '^' && sigil != '/' && sigil != '!') return false;
+    return line.find("{{", 2) == std::string_view::npos && line.find("}}") == line.size() - 2;
+}
+
+StrippedTemplate strip_standalone_lines(std::string_view text) {
+    StrippedTemplate out;
+    if (text.find("{{=") != std::string_view::npos) {
+        out.text.assign(text);
+        return out;
+    }
+    out.text.reserve(text.size());
+    std::size_t start = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        const bool has_newline = end != std::string_view::npos;
+        if (!has_newline) end = text.size();
+        const std::string_view line = text.substr(start, end - start);
+        std::string_view trimmed = line;
+        while (!trimmed.empty() && is_blank(trimmed.front())) trimmed.remove_prefix(1);
+        while (!trimmed.empty() && (is_blank(trimmed.back()) || trimmed.back() == '\r')) trimmed.remove_suffix(1);
+        if (is_standalone_tag(trimmed)) {
+            out.segments.emplace_back(out.text.size(), static_cast<std::size_t>(trimmed.data() - text.data()));
+            out.text += trimmed;
+        } else {
+            out.segments.emplace_back(out.text.size(), start);
+            out.text += line;
+            if (has_newline) out.text += '\n';
+        }
+        start = end + 1;
+    }
+    return out;
+}
+
 enum class TagKind { variable, unescaped, section, inverted, end, comment, set_delimiter, partial, inheritance };
 
 }  // namespace
@@ -49,10 +105,8 @@ enum class TagKind { variable, unescaped, section, inverted, end, comment, set_d
 // Builds the instruction list while the text is scanned once.
 class Parser {
 public:
-    // esi-gen's standalone rule was applied to the template text before kainjow saw it, and only
-    // to templates that keep the default delimiters; kainjow's own rule applies to the others.
-    explicit Parser(std::string_view text) : strip_standalone_(text.find("{{=") == std::string_view::npos) {
-        tmpl_.text_.assign(text);
+    Parser(std::string_view original, StrippedTemplate&& stripped) : original_(original), segments_(std::move(stripped.segments)) {
+        tmpl_.text_ = std::move(stripped.text);
     }
 
     ParseResult run();
@@ -80,16 +134,15 @@ private:
     }
     std::uint32_t add_name(std::string_view name);
     [[nodiscard]] bool set_delimiters(std::string_view content);
-    // Where a standalone tag's line ends (after its line break), or npos when the tag is not alone.
-    [[nodiscard]] std::size_t standalone_end(std::size_t open_at, std::size_t after_tag) const;
+    // Where an offset in the parsed text is in the template as written.
+    [[nodiscard]] SourcePos position(std::size_t offset) const { return position_of(original_, original_offset(segments_, offset)); }
 
     Template tmpl_;
     std::string open_ = "{{";
     std::string close_ = "}}";
     std::vector<OpenSection> sections_;
-    std::size_t line_first_op_ = 0;  // first instruction of the current line
-    bool line_blank_ = true;         // the current line so far holds only blanks, no tag
-    bool strip_standalone_;
+    std::string_view original_;
+    Segments segments_;
     std::string result_error_;
     std::size_t error_offset_ = 0;
 };
@@ -104,18 +157,10 @@ void Parser::add_text(std::size_t from, std::size_t to) {
             const bool crlf = c == '\r' && k + 1 < to && t[k + 1] == '\n';
             const std::size_t end = k + (crlf ? 2 : 1);
             push_text(Code::newline, k, end);
-            if (c == '\r' && !crlf) {
-                // A lone CR breaks the output line (kainjow) but not a template line (the spec).
-                line_blank_ = false;
-            } else {
-                line_first_op_ = tmpl_.ops_.size();
-                line_blank_ = true;
-            }
             k = end;
             run = k;
             continue;
         }
-        if (!is_blank(c)) line_blank_ = false;
         ++k;
     }
     if (run < to) push_text(Code::text, run, to);
@@ -162,20 +207,6 @@ bool Parser::set_delimiters(std::string_view content) {
     open_.assign(open);
     close_.assign(close);
     return true;
-}
-
-std::size_t Parser::standalone_end(std::size_t open_at, std::size_t after_tag) const {
-    if (!strip_standalone_ || !line_blank_ || open_ != "{{") return std::string_view::npos;
-    const std::string_view t = text();
-    // The sigil right after "{{" ("{{ #a }}" is not standalone), and the tag on one line.
-    const char sigil = t[open_at + 2];
-    if (sigil != '#' && sigil != '^' && sigil != '/' && sigil != '!') return std::string_view::npos;
-    if (t.substr(open_at, after_tag - open_at).find('\n') != std::string_view::npos) return std::string_view::npos;
-    std::size_t k = after_tag;
-    while (k < t.size() && (is_blank(t[k]) || t[k] == '\r')) ++k;
-    if (k == t.size()) return k;
-    if (t[k] == '\n') return k + 1;
-    return std::string_view::npos;
 }
 
 ParseResult Parser::run() {
@@ -233,14 +264,10 @@ ParseResult Parser::run() {
         }
         if (kind == TagKind::variable || kind == TagKind::unescaped) {
             tmpl_.ops_.push_back({Code::variable, kind == TagKind::variable, add_name(name), 0});
-            line_blank_ = false;
             pos = after;
             continue;
         }
 
-        // Section, inverted, end, comment, set-delimiter: these may stand alone on their line.
-        const std::size_t line_end = standalone_end(open_at, after);
-        if (line_end != std::string_view::npos) tmpl_.ops_.resize(line_first_op_);  // the blanks before the tag
         switch (kind) {
             case TagKind::section:
             case TagKind::inverted:
@@ -258,7 +285,7 @@ ParseResult Parser::run() {
                 }
                 if (sections_.back().name != name) {
                     fail("Unclosed section \"" + std::string(sections_.back().name) + "\" (closed by {{/" + std::string(name) + "}} at " +
-                             describe(position_of(t, open_at)) + ")",
+                             describe(position(open_at)) + ")",
                          sections_.back().offset);
                     break;
                 }
@@ -270,14 +297,7 @@ ParseResult Parser::run() {
                 break;
             default: break;  // comment
         }
-        if (line_end != std::string_view::npos) {
-            pos = line_end;
-            line_first_op_ = tmpl_.ops_.size();
-            line_blank_ = true;
-        } else {
-            pos = after;
-            line_blank_ = false;
-        }
+        pos = after;
     }
     if (result_error_.empty() && !sections_.empty())
         fail("Unclosed section \"" + std::string(sections_.front().name) + "\"", sections_.front().offset);
@@ -285,7 +305,7 @@ ParseResult Parser::run() {
     ParseResult result;
     if (!result_error_.empty()) {
         result.error = std::move(result_error_);
-        result.pos = position_of(t, error_offset_);
+        result.pos = position(error_offset_);
         return result;
     }
     if (tmpl_.text_.size() > UINT32_MAX || tmpl_.ops_.size() > UINT32_MAX) {
@@ -299,7 +319,7 @@ ParseResult Parser::run() {
 
 ParseResult parse(std::string_view text) {
     if (text.size() > UINT32_MAX) return {std::nullopt, "template too large", {1, 1}};
-    Parser parser(text);
+    Parser parser(text, strip_standalone_lines(text));
     return parser.run();
 }
 
