@@ -39,6 +39,7 @@ const Rule* find_rule(std::string_view id) {
 
 void RuleContext::report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes) {
     Diagnostic& d = sink_.emplace(severity_, std::string(rule_.id), std::move(message), document_.path, pos);
+    for (auto& note : notes) note.message = bounded_message(std::move(note.message));
     d.notes = std::move(notes);
 }
 

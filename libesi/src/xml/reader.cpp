@@ -4,6 +4,7 @@
 #include "esi/xml/reader.hpp"
 
 #include <cstdio>
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <pugixml.hpp>
@@ -46,14 +47,14 @@ private:
         const ParsedNumber parsed = parse_number(text);
         if (!parsed.ok()) {
             report(Severity::error, "xml-number-format",
-                   std::string(what) + ": '" + std::string(trim(text)) + "' is not a number (" + std::string(to_string(parsed.error)) +
+                   std::string(what) + ": '" + excerpt(trim(text)) + "' is not a number (" + std::string(to_string(parsed.error)) +
                        "); ESI numbers are decimal or #x hex",
                    pos);
             return std::nullopt;
         }
         if (parsed.syntax == NumberSyntax::c_hex) {
             report(Severity::warning, "xml-hex-prefix",
-                   std::string(what) + ": '" + std::string(trim(text)) + "' uses the C prefix 0x; ESI hex numbers are written #x",
+                   std::string(what) + ": '" + excerpt(trim(text)) + "' uses the C prefix 0x; ESI hex numbers are written #x",
                    pos);
         }
         return parsed.value;
@@ -99,7 +100,7 @@ private:
         const auto b = parse_boolean(text);
         if (!b)
             report(Severity::error, "xml-boolean-format",
-                   std::string(what) + ": '" + std::string(trim(text)) + "' is not a boolean (true, false, 1 or 0)", pos);
+                   std::string(what) + ": '" + excerpt(trim(text)) + "' is not a boolean (true, false, 1 or 0)", pos);
         return b;
     }
     std::optional<bool> boolean(const pugi::xml_attribute a, const pugi::xml_node owner) {
@@ -1100,13 +1101,28 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     }
 
     pugi::xml_document xml;
-    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata;
+    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata | pugi::parse_doctype;
     const pugi::xml_parse_result parsed =
         xml.load_buffer(source->text().data(), source->text().size(), parse_options, pugi::encoding_utf8);
     if (!parsed) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", describe_parse_error(parsed), path,
                                    error_position(*source, parsed));
         return result;
+    }
+    // A DOCTYPE has no place in an ESI file (the ETG schema defines the format) and is the
+    // vehicle of entity-expansion bombs and external entities. It is never processed: entities
+    // are not expanded, external ones are never fetched, and references stay as written.
+    for (const pugi::xml_node n : xml.children()) {
+        if (n.type() != pugi::node_doctype) continue;
+        const std::string_view declaration = n.value();
+        std::size_t at = static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0));
+        if (const auto open = source->text().rfind("<!", at); open != std::string::npos) at = open;
+        const bool entities = declaration.find("<!ENTITY") != std::string_view::npos;
+        result.diagnostics.emplace(Severity::warning, "xml-doctype",
+                                   entities ? "the DOCTYPE declares entities; they are not expanded and external ones are not "
+                                              "fetched, so &name; references stay as written"
+                                            : "the DOCTYPE is ignored; ESI files are defined by the ETG schema, not a DTD",
+                                   path, source->position_of(at));
     }
     const pugi::xml_node root = xml.document_element();
     if (!root) {
@@ -1122,7 +1138,7 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     return result;
 }
 
-std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error) {
+std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         error = "is a directory";
@@ -1133,11 +1149,21 @@ std::optional<std::string> read_file_bytes(const std::filesystem::path& path, st
         error = std::error_code(errno, std::generic_category()).message();
         return std::nullopt;
     }
+    auto too_large = [&] {
+        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+        std::fclose(file);
+        return std::nullopt;
+    };
+    // Regular files announce their size; pipes and devices are bounded while reading.
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > max_bytes) return too_large();
     std::string bytes;
+    if (!ec) bytes.reserve(static_cast<std::size_t>(size));
     char buffer[1 << 16];
     for (;;) {
         const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
         bytes.append(buffer, n);
+        if (bytes.size() > max_bytes) return too_large();
         if (n < sizeof buffer) break;
     }
     const bool failed = std::ferror(file) != 0;
