@@ -259,3 +259,10 @@ TEST(Reader, MissingFileIsIoError) {
     ASSERT_EQ(r.diagnostics.size(), 1u);
     EXPECT_EQ(r.diagnostics.items()[0].rule, "io-error");
 }
+
+TEST(Reader, SwapDataIsTheSchemaEnumerationAsWritten) {
+    const auto r = read(R"(<EtherCATInfo><Descriptions><Devices><Device><Type/><RxPdo><Index>#x1600</Index><Entry><Index>#x7000</Index><BitLen>16</BitLen><DataType SwapData="Swap_HB_LB">UINT</DataType></Entry></RxPdo></Device></Devices></Descriptions></EtherCATInfo>)");
+    ASSERT_TRUE(r.document);
+    EXPECT_TRUE(r.diagnostics.empty());
+    EXPECT_EQ(r.document->infos[0].devices[0].rx_pdos[0].entries[0].data_type_swap_data, "Swap_HB_LB");
+}

@@ -92,8 +92,8 @@ TEST(WriterPdo, KeepsEntryOrderAndEveryField) {
 TEST(WriterPdo, WritesSwapDataAsTheModelHoldsIt) {
     esi::EsiDocument doc = esi::test::read_ok(device_file(pdo_body));
     auto& entry = doc.infos.at(0).devices.at(0).rx_pdos.at(0).entries.at(2);
-    entry.data_type_swap_data = true;
-    EXPECT_TRUE(contains(esi::write_esi(doc), R"(<DataType SwapData="true">UINT</DataType>)"));
+    entry.data_type_swap_data = "Swap_HB_LB";
+    EXPECT_TRUE(contains(esi::write_esi(doc), R"(<DataType SwapData="Swap_HB_LB">UINT</DataType>)"));
 }
 
 }  // namespace

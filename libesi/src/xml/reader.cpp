@@ -486,7 +486,9 @@ Pdo Reader::read_pdo(const pugi::xml_node n, PdoDirection direction) {
         if (name == "Index") {
             has_index = true;
             p.index_pos = pos_of(c);
-            p.index = u32(c).value_or(0);
+            const std::optional<std::uint32_t> index = u32(c);
+            p.index = index.value_or(0);
+            p.index_invalid = !index;
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
                 if (an == "DependOnSlot") p.index_depend_on_slot = boolean(a, c);
@@ -525,7 +527,10 @@ PdoEntry Reader::read_entry(const pugi::xml_node n) {
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (name == "Index") {
             has_index = true;
-            e.index = u32(c).value_or(0);
+            const std::optional<std::uint32_t> index = u32(c);
+            e.index = index.value_or(0);
+            e.index_invalid = !index;
+            e.index_pos = pos_of(c);
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
                 if (an == "DependOnSlot") e.index_depend_on_slot = boolean(a, c);
@@ -544,7 +549,7 @@ PdoEntry Reader::read_entry(const pugi::xml_node n) {
             for (const auto a : c.attributes()) {
                 const std::string_view an = a.name();
                 if (an == "DScale") e.data_type_dscale = a.value();
-                else if (an == "SwapData") e.data_type_swap_data = boolean(a, c);
+                else if (an == "SwapData") e.data_type_swap_data = std::string(trim(a.value()));
             }
         } else keep(e.extras, c, previous);
     });

@@ -123,7 +123,7 @@ void write_entry(XmlEmitter& out, const PdoEntry& entry) {
         children.at("DataType");
         out.begin("DataType");
         put_text(out, "DScale", entry.data_type_dscale);
-        put_bool(out, "SwapData", entry.data_type_swap_data);
+        put_text(out, "SwapData", entry.data_type_swap_data);
         if (entry.data_type) out.text(*entry.data_type);
         out.end();
     }

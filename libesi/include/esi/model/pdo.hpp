@@ -9,6 +9,8 @@ enum class PdoDirection { rx, tx };  // rx: master -> slave (outputs); tx: slave
 
 struct PdoEntry {
     std::uint32_t index = 0;  // 0 = padding
+    SourcePos index_pos;      // the Index element; line 0 when it is missing
+    bool index_invalid = false;  // Index present but not a number (reported by the reader); index is then 0
     std::optional<bool> index_depend_on_slot;
     std::optional<bool> index_depend_on_slot_group;
     std::optional<std::uint32_t> subindex;  // absent means 0
@@ -17,14 +19,14 @@ struct PdoEntry {
     std::optional<std::string> comment;
     std::optional<std::string> data_type;  // as written (trimmed)
     std::optional<std::string> data_type_dscale;
-    std::optional<bool> data_type_swap_data;
+    std::optional<std::string> data_type_swap_data;  // Swap_HB_LB, Swap_HW_LW, Swap_HB_LB_HW_LW
     std::optional<bool> fixed;
     SourcePos pos;
     SourcePos bit_len_pos;
     SourcePos data_type_pos;
     Extras extras;
 
-    [[nodiscard]] bool is_padding() const { return index == 0; }
+    [[nodiscard]] bool is_padding() const { return index == 0 && !index_invalid; }
     [[nodiscard]] std::uint32_t effective_subindex() const { return subindex.value_or(0); }
 };
 
@@ -38,6 +40,7 @@ struct PdoExclude {
 struct Pdo {
     PdoDirection direction = PdoDirection::rx;
     std::uint32_t index = 0;  // 0x1600.. / 0x1A00..
+    bool index_invalid = false;  // Index present but not a number (reported by the reader); index is then 0
     std::optional<bool> index_depend_on_slot;
     std::optional<bool> index_depend_on_slot_group;
     SourcePos index_pos;

@@ -1,0 +1,155 @@
+// esi-gen: one device source (YAML, or an existing ESI file) -> ESI XML, C++ object-dictionary
+// header, C99 slave tables, SOES object list and process-image structs.
+// Exit codes: 0 written, 1 generation or writing failed (nothing written), 2 usage error or the
+// source has errors (nothing written).
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+#include "esi/codegen/generate.hpp"
+#include "esi/codegen/template_lookup.hpp"
+#include "esi/device_selector.hpp"
+#include "esi/version.hpp"
+#include "esi/xml/reader.hpp"
+#include "esi/yaml/source.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int exit_ok = 0;
+constexpr int exit_failed = 1;
+constexpr int exit_usage = 2;
+
+void print(const esi::Diagnostics& diagnostics) {
+    esi::Diagnostics sorted = diagnostics;
+    sorted.sort();
+    for (const auto& d : sorted) {
+        std::string where = d.path.empty() ? "esi-gen" : d.path;
+        if (d.pos.known()) where += ":" + std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column);
+        std::cerr << where << ": " << esi::to_string(d.severity) << ": " << d.message << " [" << d.rule << "]\n";
+    }
+}
+
+struct Source {
+    std::optional<esi::EsiDocument> document;
+    esi::Diagnostics diagnostics;
+};
+
+Source load(const fs::path& path) {
+    const std::string ext = path.extension().string();
+    if (ext == ".yaml" || ext == ".yml") {
+        esi::DeviceSource loaded = esi::load_device_source_file(path);
+        return {std::move(loaded.document), std::move(loaded.diagnostics)};
+    }
+    esi::ReadResult read = esi::read_esi_file(path);
+    return {std::move(read.document), std::move(read.diagnostics)};
+}
+
+// The running executable, to find <prefix>/share/libesi/templates beside an installed esi-gen.
+std::optional<fs::path> executable_path(const char* argv0) {
+    std::error_code ec;
+    fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) return self;
+    if (argv0 && std::string_view(argv0).find('/') != std::string_view::npos) return fs::absolute(argv0, ec);
+    return std::nullopt;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
+    std::string source, output_dir, dump_model, device, prefix;
+    std::vector<std::string> only, template_dirs;
+    bool list_outputs = false, list_kinds = false;
+    app.add_option("source", source, "YAML device source (.yaml/.yml) or ESI file (.xml)");
+    app.add_option("-o,--output", output_dir, "output directory (created when missing)");
+    app.add_option("--only", only, "output kinds to generate, comma-separated (default: all; see --list-kinds)")->delimiter(',');
+    app.add_option("--templates", template_dirs, "directory searched for templates before the built-in ones (repeatable)");
+    app.add_option("--dump-model", dump_model, "print the JSON view the templates render from, and exit")->check(CLI::IsMember({"json"}));
+    app.add_option("--device", device, "PRODUCTCODE[:REVISION]: only the matching devices");
+    app.add_option("--prefix", prefix, "C symbol prefix (default: each device's c_name)");
+    app.add_flag("--list-outputs", list_outputs, "print the files a run would write, one per line, and exit");
+    app.add_flag("--list-kinds", list_kinds, "print the output kinds and exit");
+    app.set_version_flag("--version", std::string(esi::version()));
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return exit_usage;
+    }
+
+    if (list_kinds) {
+        for (const auto& kind : esi::codegen::output_kinds()) std::cout << kind.name << "\t" << kind.summary << "\n";
+        return exit_ok;
+    }
+    if (source.empty()) {
+        std::cerr << "esi-gen: no source given (--help for usage)\n";
+        return exit_usage;
+    }
+    if (output_dir.empty() && dump_model.empty()) {
+        std::cerr << "esi-gen: give an output directory with -o (or --dump-model json)\n";
+        return exit_usage;
+    }
+    if (const esi::Diagnostics bad = esi::codegen::check_output_kinds(only); bad.has_errors()) {
+        print(bad);
+        return exit_usage;
+    }
+    esi::codegen::GenerateOptions options;
+    options.output_dir = output_dir;
+    options.only = only;
+    if (!device.empty()) {
+        std::string error;
+        options.view.device = esi::parse_device_selector(device, error);
+        if (!options.view.device) {
+            std::cerr << "esi-gen: --device: " << error << "\n";
+            return exit_usage;
+        }
+    }
+    if (!prefix.empty()) options.view.symbol_prefix = prefix;
+    std::vector<fs::path> user_dirs;
+    for (const auto& dir : template_dirs) {
+        std::error_code ec;
+        if (!fs::is_directory(dir, ec)) {
+            std::cerr << "esi-gen: --templates: " << dir << " is not a directory\n";
+            return exit_usage;
+        }
+        user_dirs.emplace_back(dir);
+    }
+    options.template_dirs = esi::codegen::template_search_path(user_dirs, executable_path(argc > 0 ? argv[0] : nullptr));
+
+    Source loaded = load(source);
+    print(loaded.diagnostics);
+    if (!loaded.document || loaded.diagnostics.has_errors()) return exit_usage;
+
+    if (!dump_model.empty()) {
+        esi::codegen::ModelViewText view = esi::codegen::model_view_json(*loaded.document, options.view);
+        print(view.diagnostics);
+        if (view.diagnostics.has_errors()) return exit_usage;
+        std::fwrite(view.json.data(), 1, view.json.size(), stdout);
+        return exit_ok;
+    }
+    // Planning first: a selection that matches no device or would overwrite the source is a usage
+    // error, found before anything is rendered.
+    esi::Diagnostics planning;
+    const auto planned = esi::codegen::plan_outputs(*loaded.document, options, planning);
+    print(planning);
+    if (planning.has_errors()) return exit_usage;
+    if (list_outputs) {
+        for (const auto& file : planned) std::cout << file.path.generic_string() << "\n";
+        return exit_ok;
+    }
+
+    esi::codegen::GenerateResult generated = esi::codegen::generate_outputs(*loaded.document, options);
+    print(generated.diagnostics);
+    if (generated.diagnostics.has_errors()) return exit_failed;
+    const esi::Diagnostics written = esi::write_files_atomically(generated.files);
+    print(written);
+    return written.has_errors() ? exit_failed : exit_ok;
+}

@@ -1,0 +1,241 @@
+// od-… checks on the objects of a Dictionary: presence of the mandatory objects, duplicates,
+// flag values, and default/minimum/maximum values against the entry they belong to.
+#include <initializer_list>
+#include <string>
+#include <unordered_map>
+
+#include "check/od_checks.hpp"
+#include "check/od_scope.hpp"
+#include "check/od_text.hpp"
+#include "check/od_type_index.hpp"
+#include "check/od_values.hpp"
+#include "esi/model/object_layout.hpp"
+
+namespace esi::rules::od {
+
+namespace {
+
+struct MandatoryObject {
+    std::uint32_t index;
+    std::string_view name;
+};
+// ETG.1000.6 / CiA 301: every CoE device has Device type (0x1000) and Identity (0x1018); CTT
+// TF-2301 tests both.
+constexpr MandatoryObject mandatory_objects[] = {{0x1000, "Device type"}, {0x1018, "Identity"}};
+
+std::string number_text(const Number& n) { return format_decimal(n); }
+
+// The flags a Dictionary declares: objects' and DataType SubItems'.
+template <class F>
+void for_each_flags(const Dictionary& dictionary, F&& f) {
+    for (const auto& type : dictionary.data_types)
+        for (const auto& item : type.sub_items)
+            if (item.flags) f(*item.flags);
+    for (const auto& object : dictionary.objects)
+        if (object.flags) f(*object.flags);
+}
+
+bool one_of(std::string_view value, std::initializer_list<std::string_view> allowed) {
+    for (auto a : allowed)
+        if (value == a) return true;
+    return false;
+}
+
+// A value of an entry, where its default, minimum and maximum come from.
+struct EntryValues {
+    const std::optional<Number>& default_value;
+    const std::optional<HexData>& default_data;
+    const std::optional<Number>& min_value;
+    const std::optional<HexData>& min_data;
+    const std::optional<Number>& max_value;
+    const std::optional<HexData>& max_data;
+    const std::optional<std::string>& default_string;
+};
+
+EntryValues values_of(const ObjectInfo& info) {
+    return {info.default_value, info.default_data, info.min_value, info.min_data, info.max_value, info.max_data, info.default_string};
+}
+
+const std::optional<HexData> no_data;
+
+EntryValues values_of(const DataTypeSubItem& item) {
+    return {item.default_value, item.default_data, item.min_value, no_data, item.max_value, no_data, item.default_string};
+}
+
+// What a message calls the entry, built only when there is something to report.
+struct EntryName {
+    const Object* object = nullptr;  // object entries
+    std::uint32_t subindex = 0;
+    bool whole_object = false;  // a VAR: the object itself
+    const DataType* type = nullptr;  // DataType SubItems
+    const DataTypeSubItem* item = nullptr;
+
+    [[nodiscard]] std::string text() const {
+        if (item) return "SubItem '" + item->name + "' of DataType " + type->name;
+        return whole_object ? object_address(object->index) : entry_address(object->index, subindex);
+    }
+};
+
+// Length checks of DefaultData/MinData/MaxData and DefaultString for an entry of `bits` bits.
+void check_lengths(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
+                   const BasicType* basic, std::uint64_t bits, SourcePos fallback) {
+    if (bits == 0) return;
+    const std::uint64_t bytes = (bits + 7) / 8;
+    // Strings and byte arrays may be given shorter than their maximum length.
+    const bool variable = !basic || basic->type_class == TypeClass::visible_string || basic->type_class == TypeClass::octet_string ||
+                          basic->type_class == TypeClass::unicode_string || parse_type_name(type_name).kind == TypeName::Kind::array;
+    const auto check = [&](const std::optional<HexData>& data, std::string_view element) {
+        // Empty data (<DefaultData/>) gives no value at all.
+        if (!data || !data->valid() || data->text.empty()) return;
+        const std::uint64_t length = data->byte_length();
+        if (length == bytes || (variable && length <= bytes)) return;
+        context.report(data->pos.line ? data->pos : fallback,
+                       std::string(element) + " of " + name.text() + " is " + std::to_string(length) + (length == 1 ? " byte" : " bytes") +
+                           " but the entry (" + std::string(type_name) + ", " + bits_text(bits) + ") is " +
+                           (variable ? "at most " : "") + std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes"));
+    };
+    check(values.default_data, "DefaultData");
+    check(values.min_data, "MinData");
+    check(values.max_data, "MaxData");
+    if (values.default_string && values.default_string->size() > bytes)
+        context.report(fallback, "DefaultString of " + name.text() + " has " + std::to_string(values.default_string->size()) +
+                                     " bytes but the entry (" + std::string(type_name) + ") holds " + std::to_string(bytes));
+}
+
+struct Reading {
+    std::optional<Number> default_value;
+    std::optional<Number> min;
+    std::optional<Number> max;
+};
+
+// The entry's values as numbers. With `as_bit_patterns`, HexDecValues that only fit the entry's
+// width as two's complement are read that way (#xfff80001 for a DINT, -1 for a UDINT). Data of
+// the wrong length is left out: od-default-length reports it, and its value is a guess.
+Reading read_values(const EntryValues& values, const ValueFormat& format, bool as_bit_patterns) {
+    const std::uint64_t bytes = (format.bit_size + 7) / 8;
+    const auto pick = [&](const std::optional<Number>& value, const std::optional<HexData>& data) -> std::optional<Number> {
+        if (value) return as_bit_patterns ? normalized(*value, format) : *value;
+        if (data && data->valid() && data->byte_length() == bytes) return number_from_data(*data, format);
+        return std::nullopt;
+    };
+    Reading r{pick(values.default_value, values.default_data), pick(values.min_value, values.min_data),
+              pick(values.max_value, values.max_data)};
+    // MinValue 0 with MaxValue 0 is how generated dictionaries say "no limits" (Beckhoff's SoE
+    // dictionaries: default 5000 with both limits 0).
+    if (r.min && r.max && r.min->magnitude == 0 && r.max->magnitude == 0) r.min = r.max = std::nullopt;
+    return r;
+}
+
+std::optional<std::string> range_violation(const Reading& r, const ValueFormat& format, const EntryName& name,
+                                           std::string_view type_name) {
+    if (r.min && r.max && less(*r.max, *r.min))
+        return "MinValue " + number_text(*r.min) + " of " + name.text() + " is greater than its MaxValue " + number_text(*r.max);
+    if (!r.default_value) return std::nullopt;
+    const Number& def = *r.default_value;
+    if (r.min && less(def, *r.min)) return "the default " + number_text(def) + " of " + name.text() + " is below its MinValue " + number_text(*r.min);
+    if (r.max && less(*r.max, def)) return "the default " + number_text(def) + " of " + name.text() + " is above its MaxValue " + number_text(*r.max);
+    const Number low = format_min(format);
+    const Number high = format_max(format);
+    if (less(def, low) || less(high, def))
+        return "the default " + number_text(def) + " of " + name.text() + " does not fit " + std::string(type_name) + " (" +
+               bits_text(format.bit_size) + ": " + number_text(low) + " to " + number_text(high) + ")";
+    return std::nullopt;
+}
+
+void check_range(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
+                 const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+    if (!basic || !basic->is_integer()) return;
+    const std::uint64_t width = bits > 0 ? bits : basic->bit_size;
+    if (width == 0 || width > 64) return;
+    const ValueFormat format{width, basic->type_class == TypeClass::signed_integer};
+    // Reported only when neither reading of the values is in range: a value is a bit pattern
+    // or a plain number depending on the tool that wrote it, and the file does not say which.
+    const std::optional<std::string> as_patterns = range_violation(read_values(values, format, true), format, name, type_name);
+    if (!as_patterns || !range_violation(read_values(values, format, false), format, name, type_name)) return;
+    context.report(pos, *as_patterns);
+}
+
+template <class F>
+void for_each_valued_entry(const EsiDocument& document, F&& f) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        const Dictionary& dictionary = *scope.dictionary;
+        const TypeIndex types(dictionary);
+        for (const auto& type : dictionary.data_types)
+            for (const auto& item : type.sub_items) {
+                if (!item.default_data && !item.default_value && !item.default_string && !item.max_value && !item.min_value) continue;
+                f(values_of(item), EntryName{nullptr, 0, false, &type, &item}, std::string_view(item.type), types.basic(item.type),
+                  item.bit_size, item.pos);
+            }
+        for (const auto& object : dictionary.objects) {
+            if (!object.info) continue;  // no values at all, for the object or its sub-entries
+            const ObjectLayout layout = layout_of(&dictionary, object);
+            for (const auto& entry : layout.entries) {
+                if (!entry.info) continue;
+                f(values_of(*entry.info), EntryName{&object, entry.subindex, layout.code == ObjectCode::var, nullptr, nullptr},
+                  std::string_view(entry.type), entry.basic, entry.bit_size, entry.info->pos);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void check_mandatory_object(const EsiDocument& document, RuleContext& context) {
+    for (const auto& info : document.infos)
+        for (const auto& device : info.devices) {
+            // Only a device that describes its CoE dictionary in the ESI can be checked; many
+            // devices leave it to SDO information at run time.
+            if (!device.mailbox || !device.mailbox->coe) continue;
+            const Dictionary* dictionary = device.dictionary();
+            if (!dictionary || dictionary->objects.empty()) continue;
+            for (const auto& mandatory : mandatory_objects) {
+                if (dictionary->find_object(mandatory.index)) continue;
+                context.report(dictionary->pos, "the device has a CoE mailbox, but its Dictionary has no object " +
+                                                    object_address(mandatory.index) + " (" + std::string(mandatory.name) +
+                                                    "), which every CoE device must have");
+            }
+        }
+}
+
+void check_duplicate_object(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        std::unordered_map<std::uint32_t, const Object*> seen;
+        for (const auto& object : scope.dictionary->objects) {
+            if (object.index_pos.line == 0) continue;  // no Index: reported by the reader
+            const auto [it, inserted] = seen.emplace(object.index, &object);
+            if (inserted) continue;
+            context.report(object.index_pos, "Object " + object_address(object.index) + " is declared twice in this Dictionary",
+                           {context.note(it->second->index_pos, "first declared here")});
+        }
+    }
+}
+
+void check_flags_value(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        for_each_flags(*scope.dictionary, [&](const ObjectFlags& flags) {
+            // ETG.2000 ObjectType/Flags enumerations.
+            if (flags.access && !one_of(*flags.access, {"ro", "rw", "wo"}))
+                context.report(flags.pos, "Access '" + *flags.access + "' is not ro, rw or wo");
+            if (flags.pdo_mapping && !one_of(*flags.pdo_mapping, {"R", "T", "RT", "TR", "r", "t", "rt", "tr"}))
+                context.report(flags.pos, "PdoMapping '" + *flags.pdo_mapping + "' is not R, T, RT or TR (lower case for optional mapping)");
+            if (flags.category && !one_of(*flags.category, {"m", "o", "c"}))
+                context.report(flags.pos, "Category '" + *flags.category + "' is not m, o or c");
+        });
+    }
+}
+
+void check_default_length(const EsiDocument& document, RuleContext& context) {
+    for_each_valued_entry(document, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
+                                        const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+        check_lengths(context, values, name, type_name, basic, bits, pos);
+    });
+}
+
+void check_default_range(const EsiDocument& document, RuleContext& context) {
+    for_each_valued_entry(document, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
+                                        const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+        check_range(context, values, name, type_name, basic, bits, pos);
+    });
+}
+
+}  // namespace esi::rules::od

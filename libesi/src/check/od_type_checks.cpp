@@ -1,0 +1,254 @@
+// od-… checks on the DataTypes of a Dictionary and on the type names its objects use
+// (ETG.2000 DictionaryType; XSD keys DataTypeKey/BaseTypeRef/SubItemTypeRef/ObjectTypesRef).
+#include <algorithm>
+#include <map>
+#include <string>
+#include <unordered_set>
+#include <vector>
+
+#include "check/od_checks.hpp"
+#include "check/od_scope.hpp"
+#include "check/od_text.hpp"
+#include "check/od_type_index.hpp"
+#include "esi/data_types.hpp"
+#include "esi/number.hpp"
+
+namespace esi::rules::od {
+
+namespace {
+
+// A place where a Dictionary names a type: an Object's Type, a SubItem's Type, a BaseType.
+struct TypeReference {
+    std::string_view name;
+    SourcePos pos;
+    const Object* object = nullptr;
+    const DataType* data_type = nullptr;
+    const DataTypeSubItem* sub_item = nullptr;
+};
+
+template <class F>
+void for_each_type_reference(const Dictionary& dictionary, F&& f) {
+    for (const auto& type : dictionary.data_types) {
+        if (type.base_type && !trim(*type.base_type).empty())
+            f(TypeReference{trim(*type.base_type), type.pos, nullptr, &type, nullptr});
+        for (const auto& item : type.sub_items)
+            if (!trim(item.type).empty()) f(TypeReference{trim(item.type), item.pos, nullptr, &type, &item});
+    }
+    for (const auto& object : dictionary.objects)
+        if (!trim(object.type).empty())
+            f(TypeReference{trim(object.type), object.type_pos.line ? object.type_pos : object.pos, &object, nullptr, nullptr});
+}
+
+std::string describe(const TypeReference& ref) {
+    if (ref.object) return "Object " + object_address(ref.object->index);
+    if (ref.sub_item) return "SubItem '" + ref.sub_item->name + "' of DataType " + ref.data_type->name;
+    return "DataType " + ref.data_type->name + " (BaseType)";
+}
+
+// Reports one finding per distinct name: the first reference, with how many others there are.
+struct NameFindings {
+    struct Entry {
+        TypeReference first;
+        std::string culprit;
+        std::size_t count = 0;
+    };
+    std::vector<Entry> entries;
+    std::map<std::string, std::size_t, std::less<>> by_name;
+
+    void add(const TypeReference& ref, std::string_view culprit) {
+        const auto it = by_name.find(culprit);
+        if (it != by_name.end()) {
+            ++entries[it->second].count;
+            return;
+        }
+        by_name.emplace(std::string(culprit), entries.size());
+        entries.push_back(Entry{ref, std::string(culprit), 1});
+    }
+};
+
+std::string also_used(std::size_t count) {
+    if (count <= 1) return "";
+    return " (used " + std::to_string(count) + " times; first here)";
+}
+
+}  // namespace
+
+void check_type_unresolved(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        const TypeIndex types(*scope.dictionary);
+        NameFindings findings;
+        for_each_type_reference(*scope.dictionary, [&](const TypeReference& ref) {
+            std::string_view culprit;
+            if (types.status(ref.name, &culprit) == TypeNameStatus::unresolved) findings.add(ref, culprit);
+        });
+        for (const auto& f : findings.entries) {
+            std::string message = describe(f.first) + " uses type '" + std::string(f.first.name) + "', ";
+            message += f.culprit != f.first.name ? "whose element type '" + f.culprit + "'" : std::string("which");
+            message += " is neither a basic ESI type nor a DataType of this Dictionary" + also_used(f.count);
+            context.report(f.first.pos, std::move(message));
+        }
+    }
+}
+
+void check_nonstandard_type_name(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        // A Dictionary may define a DataType of any name, INT8 included (Beckhoff's SoE
+        // dictionaries do); only names nothing defines are faults.
+        const TypeIndex types(*scope.dictionary);
+        NameFindings findings;
+        for_each_type_reference(*scope.dictionary, [&](const TypeReference& ref) {
+            std::string_view culprit;
+            if (types.status(ref.name, &culprit) == TypeNameStatus::nonstandard) findings.add(ref, culprit);
+        });
+        for (const auto& f : findings.entries)
+            context.report(f.first.pos, describe(f.first) + " uses type '" + f.culprit + "', which is not an ESI type name; the standard name is '" +
+                                            std::string(standard_type_name_for(f.culprit)) + "'" + also_used(f.count));
+    }
+}
+
+void check_type_cycle(const EsiDocument& document, RuleContext& context) {
+    const auto before = [](const SourcePos& a, const SourcePos& b) { return a.line < b.line || (a.line == b.line && a.column < b.column); };
+    for (const auto& scope : dictionary_scopes(document)) {
+        const TypeIndex types(*scope.dictionary);
+        std::unordered_set<const DataType*> seen;
+        for (const auto& type : scope.dictionary->data_types) {
+            if (types.find(type.name) != &type || !types.in_base_type_cycle(type) || seen.count(&type)) continue;
+            // One finding per loop, at the member that comes first in the file; the loop is
+            // walked once.
+            std::vector<const DataType*> members;
+            const DataType* first = &type;
+            for (const DataType* t = &type; t && seen.insert(t).second; t = types.find(*t->base_type)) {
+                members.push_back(t);
+                if (before(t->pos, first->pos)) first = t;
+            }
+            // Name the loop starting at its first member.
+            const auto at = std::find(members.begin(), members.end(), first);
+            std::rotate(members.begin(), at, members.end());
+            std::string chain;
+            for (const DataType* m : members) chain += m->name + " -> ";
+            chain += first->name;
+            context.report(first->name_pos.line ? first->name_pos : first->pos,
+                           "DataType " + first->name + " is its own base type through BaseType: " + chain);
+        }
+    }
+}
+
+void check_subitem_layout(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        for (const auto& type : scope.dictionary->data_types) {
+            // Past the end: every SubItem, reported once per DataType (the first in the file).
+            for (const auto& item : type.sub_items) {
+                const std::uint64_t end = item.bit_offset + item.bit_size;
+                if (item.bit_size == 0 || type.bit_size == 0 || end <= type.bit_size) continue;
+                context.report(item.pos, "SubItem '" + item.name + "' ends at bit " + std::to_string(end) + " but DataType " + type.name +
+                                             " has BitSize " + std::to_string(type.bit_size));
+                break;
+            }
+            // Overlaps: only between sub-indices (SubIdx). SubItems without SubIdx are members of
+            // a structure, where SoE dictionaries lay out unions on purpose (Beckhoff
+            // DT_IDN_..._Union).
+            std::vector<const DataTypeSubItem*> items;
+            for (const auto& item : type.sub_items)
+                if (item.bit_size > 0 && item.subindex) items.push_back(&item);
+            std::stable_sort(items.begin(), items.end(),
+                             [](const DataTypeSubItem* a, const DataTypeSubItem* b) { return a->bit_offset < b->bit_offset; });
+            const DataTypeSubItem* reach = nullptr;  // the item that extends furthest so far
+            const DataTypeSubItem* first_item = nullptr;
+            const DataTypeSubItem* first_other = nullptr;
+            std::size_t overlapping = 0;
+            for (const DataTypeSubItem* item : items) {
+                if (reach && item->bit_offset < reach->bit_offset + reach->bit_size) {
+                    if (!first_item) {
+                        first_item = item;
+                        first_other = reach;
+                    }
+                    ++overlapping;
+                }
+                if (!reach || item->bit_offset + item->bit_size > reach->bit_offset + reach->bit_size) reach = item;
+            }
+            if (!first_item) continue;
+            // One finding per DataType: a type whose BitOffs were never filled in overlaps everywhere.
+            const auto bits = [](const DataTypeSubItem& i) {
+                return std::to_string(i.bit_offset) + "-" + std::to_string(i.bit_offset + i.bit_size - 1);
+            };
+            std::string message = "SubItem '" + first_item->name + "' (bits " + bits(*first_item) + ") overlaps SubItem '" +
+                                  first_other->name + "' (bits " + bits(*first_other) + ") in DataType " + type.name;
+            if (overlapping > 1) message += " (" + std::to_string(overlapping) + " SubItems overlap others)";
+            context.report(first_item->pos, std::move(message), {context.note(first_other->pos, "the other SubItem")});
+        }
+    }
+}
+
+void check_array_size(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        const TypeIndex types(*scope.dictionary);
+        for (const auto& type : scope.dictionary->data_types) {
+            if (type.array_info.empty()) continue;
+            const ArrayInfo& first = type.array_info.front();
+            std::uint64_t elements = 1;
+            bool valid = true;
+            for (const auto& info : type.array_info) {
+                // Elements 0 with BitSize 0 is an empty list (Beckhoff's DT1C12ARR of a device
+                // without RxPdos) and consistent; a negative count is not.
+                if (info.elements < 0) {
+                    context.report(info.pos, "ArrayInfo of DataType " + type.name + " has Elements " + std::to_string(info.elements) +
+                                                 "; the element count cannot be negative");
+                    valid = false;
+                    break;
+                }
+                elements *= static_cast<std::uint64_t>(info.elements);
+            }
+            if (!valid || type.bit_size == 0 || !type.base_type) continue;
+            const std::optional<std::uint64_t> element_bits = types.bit_size(*type.base_type);
+            if (!element_bits || *element_bits == 0) continue;
+            if (elements * *element_bits == type.bit_size) continue;
+            context.report(first.pos, "DataType " + type.name + " has " + std::to_string(elements) + " elements of " + std::string(trim(*type.base_type)) +
+                                          " (" + bits_text(*element_bits) + " each, " + bits_text(elements * *element_bits) +
+                                          ") but BitSize " + std::to_string(type.bit_size));
+        }
+    }
+}
+
+void check_bitsize(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        const TypeIndex types(*scope.dictionary);
+        for (const auto& type : scope.dictionary->data_types) {
+            // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
+            if (type.bit_size > 0 && types.find(type.name) == &type) {
+                if (const std::optional<std::uint64_t> implied = implied_bit_size(type.name); implied && *implied != type.bit_size)
+                    context.report(type.name_pos.line ? type.name_pos : type.pos, "DataType " + type.name + " has BitSize " +
+                                                                                      std::to_string(type.bit_size) + " but " + type.name +
+                                                                                      " is " + bits_text(*implied));
+            }
+            for (const auto& item : type.sub_items) {
+                if (item.bit_size == 0 || trim(item.type).empty()) continue;
+                const std::optional<std::uint64_t> bits = types.bit_size(item.type);
+                if (!bits || *bits == item.bit_size) continue;
+                context.report(item.pos, "SubItem '" + item.name + "' of DataType " + type.name + " has BitSize " + std::to_string(item.bit_size) +
+                                             " but its type " + std::string(trim(item.type)) + " is " + bits_text(*bits));
+            }
+        }
+        for (const auto& object : scope.dictionary->objects) {
+            if (object.bit_size == 0 || object.bit_size_pos.line == 0 || trim(object.type).empty()) continue;
+            const std::optional<std::uint64_t> bits = types.bit_size(object.type);
+            if (!bits || *bits == object.bit_size) continue;
+            context.report(object.bit_size_pos, "Object " + object_address(object.index) + " has BitSize " + std::to_string(object.bit_size) +
+                                                    " but its type " + std::string(trim(object.type)) + " is " + bits_text(*bits));
+        }
+    }
+}
+
+void check_duplicate_datatype(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : dictionary_scopes(document)) {
+        const TypeIndex types(*scope.dictionary);
+        for (const auto& type : scope.dictionary->data_types) {
+            const DataType* first = types.find(type.name);
+            if (!first || first == &type) continue;
+            context.report(type.name_pos.line ? type.name_pos : type.pos,
+                           "DataType " + type.name + " is defined twice in this Dictionary; masters use one of the definitions",
+                           {context.note(first->name_pos.line ? first->name_pos : first->pos, "first defined here")});
+        }
+    }
+}
+
+}  // namespace esi::rules::od

@@ -1,0 +1,129 @@
+#include "check/od_type_index.hpp"
+
+#include <vector>
+
+#include "esi/data_types.hpp"
+#include "esi/number.hpp"
+
+namespace esi::rules {
+
+namespace {
+// Real BaseType chains are one or two steps long (an enum on USINT); a bound keeps hostile
+// files with long chains linear.
+constexpr int max_base_type_steps = 32;
+}  // namespace
+
+TypeIndex::TypeIndex(const Dictionary& dictionary) { add(dictionary); }
+
+TypeIndex::TypeIndex(const Dictionary* dictionary) {
+    if (dictionary) add(*dictionary);
+}
+
+void TypeIndex::add(const Dictionary& dictionary) {
+    types_.reserve(dictionary.data_types.size());
+    for (const auto& t : dictionary.data_types) types_.emplace(std::string_view(t.name), &t);
+    find_cycles();
+}
+
+void TypeIndex::find_cycles() {
+    // Every DataType has at most one BaseType, so the types form chains that either end or run
+    // into one loop. One walk per chain, marking what it passed, finds every loop in linear time.
+    enum class State { unvisited, on_path, done };
+    std::unordered_map<const DataType*, State> state;
+    state.reserve(types_.size());
+    const auto next = [&](const DataType* t) -> const DataType* {
+        if (!t->base_type) return nullptr;
+        const std::string_view base = trim(*t->base_type);
+        const DataType* n = find(base);
+        // "UINT" defined with BaseType "UINT": a basic type described by itself, not a loop.
+        if (n == t && parse_type_name(base).kind != TypeName::Kind::named) return nullptr;
+        return n;
+    };
+    std::vector<const DataType*> path;
+    for (const auto& [name, start] : types_) {
+        if (state[start] != State::unvisited) continue;
+        path.clear();
+        const DataType* t = start;
+        while (t && state[t] == State::unvisited) {
+            state[t] = State::on_path;
+            path.push_back(t);
+            t = next(t);
+        }
+        if (t && state[t] == State::on_path) {
+            // The loop is the part of the path from t on.
+            bool in_loop = false;
+            for (const DataType* p : path) {
+                in_loop = in_loop || p == t;
+                if (in_loop) in_cycle_.insert(p);
+            }
+        }
+        for (const DataType* p : path) state[p] = State::done;
+    }
+}
+
+const BasicType* TypeIndex::basic(std::string_view name) const {
+    name = trim(name);
+    for (int step = 0; step < max_base_type_steps; ++step) {
+        const DataType* t = find(name);
+        if (!t) {
+            const TypeName parsed = parse_type_name(name);
+            return parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string ? parsed.basic : nullptr;
+        }
+        if (!t->array_info.empty() || !t->sub_items.empty()) return nullptr;
+        const std::string_view base = t->base_type ? trim(*t->base_type) : std::string_view{};
+        if (base.empty() || base == name) {
+            // A DataType named like a basic type ("UINT" with its BitSize) is that type.
+            const TypeName parsed = parse_type_name(name);
+            return parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string ? parsed.basic : nullptr;
+        }
+        name = base;
+    }
+    return nullptr;  // a BaseType loop, or a chain too long to be real
+}
+
+const DataType* TypeIndex::find(std::string_view name) const {
+    const auto it = types_.find(trim(name));
+    return it == types_.end() ? nullptr : it->second;
+}
+
+TypeNameStatus TypeIndex::status(std::string_view name, std::string_view* culprit) const {
+    name = trim(name);
+    for (int depth = 0; depth < 8; ++depth) {
+        if (find(name)) return TypeNameStatus::resolved;
+        const TypeName parsed = parse_type_name(name);
+        if (parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string) return TypeNameStatus::resolved;
+        if (parsed.kind == TypeName::Kind::array) {
+            // Continue with the element type; parsed.element owns its text, so find it in `name`.
+            const auto at = name.rfind(parsed.element);
+            if (at == std::string_view::npos) return TypeNameStatus::resolved;
+            name = name.substr(at, parsed.element.size());
+            continue;
+        }
+        if (culprit) *culprit = name;
+        return standard_type_name_for(name).empty() ? TypeNameStatus::unresolved : TypeNameStatus::nonstandard;
+    }
+    return TypeNameStatus::resolved;  // absurdly nested arrays: nothing useful to say
+}
+
+std::optional<std::uint64_t> TypeIndex::bit_size(std::string_view name) const {
+    name = trim(name);
+    if (const DataType* t = find(name)) {
+        if (t->bit_size > 0) return t->bit_size;
+        return std::nullopt;
+    }
+    const TypeName parsed = parse_type_name(name);
+    if (parsed.kind == TypeName::Kind::array) {
+        const auto at = name.rfind(parsed.element);
+        if (at == std::string_view::npos || parsed.element_count() == 0) return std::nullopt;
+        const std::string_view element = name.substr(at, parsed.element.size());
+        if (element == name) return std::nullopt;
+        const std::optional<std::uint64_t> element_bits = bit_size(element);
+        if (!element_bits) return std::nullopt;
+        return *element_bits * parsed.element_count();
+    }
+    return implied_bit_size(name);
+}
+
+bool TypeIndex::in_base_type_cycle(const DataType& type) const { return in_cycle_.count(&type) != 0; }
+
+}  // namespace esi::rules

@@ -1,0 +1,80 @@
+#include "check/od_values.hpp"
+
+namespace esi::rules {
+
+namespace {
+
+std::uint64_t width_mask(std::uint64_t bits) { return bits >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits) - 1u; }
+
+Number from_pattern(std::uint64_t pattern, const ValueFormat& format) {
+    const std::uint64_t bits = format.bit_size == 0 || format.bit_size > 64 ? 64 : format.bit_size;
+    pattern &= width_mask(bits);
+    if (format.is_signed && bits > 0 && ((pattern >> (bits - 1)) & 1u)) {
+        // Negative: magnitude is the two's complement within `bits`.
+        return Number{(~pattern + 1u) & width_mask(bits), true};
+    }
+    return Number::from_unsigned(pattern);
+}
+
+}  // namespace
+
+std::optional<Number> number_from_data(const HexData& data, const ValueFormat& format) {
+    const auto bytes = data.bytes();
+    if (!bytes || bytes->empty() || bytes->size() > 8) return std::nullopt;
+    std::uint64_t pattern = 0;
+    for (std::size_t i = 0; i < bytes->size(); ++i) pattern |= std::uint64_t{(*bytes)[i]} << (8 * i);
+    ValueFormat effective = format;
+    // Data shorter than the entry is zero-extended; the sign bit is the entry's, not the data's.
+    if (effective.bit_size == 0 || effective.bit_size > 64) effective.bit_size = 8 * bytes->size();
+    return from_pattern(pattern, effective);
+}
+
+Number normalized(const Number& value, const ValueFormat& format) {
+    if (format.bit_size == 0 || format.bit_size > 64 || value.magnitude == 0) return value;
+    const std::uint64_t signed_max = width_mask(format.bit_size - 1);
+    if (format.is_signed) {
+        // #xFFFF for an INT: the bit pattern of -1.
+        if (value.negative || value.magnitude <= signed_max || value.magnitude > width_mask(format.bit_size)) return value;
+        return from_pattern(value.magnitude, format);
+    }
+    // -1 for a UDINT: Beckhoff's way of writing 0xFFFFFFFF.
+    if (!value.negative || value.magnitude > signed_max + 1) return value;
+    return from_pattern(~value.magnitude + 1u, format);
+}
+
+std::optional<Number> value_of(const std::optional<Number>& value, const std::optional<HexData>& data, const ValueFormat& format) {
+    if (value) return normalized(*value, format);
+    if (data) return number_from_data(*data, format);
+    return std::nullopt;
+}
+
+std::optional<Number> default_number(const ObjectInfo& info, const ValueFormat& format) {
+    return value_of(info.default_value, info.default_data, format);
+}
+std::optional<Number> min_number(const ObjectInfo& info, const ValueFormat& format) {
+    return value_of(info.min_value, info.min_data, format);
+}
+std::optional<Number> max_number(const ObjectInfo& info, const ValueFormat& format) {
+    return value_of(info.max_value, info.max_data, format);
+}
+
+Number format_min(const ValueFormat& format) {
+    if (!format.is_signed || format.bit_size == 0) return Number{};
+    const std::uint64_t bits = format.bit_size > 64 ? 64 : format.bit_size;
+    return Number{std::uint64_t{1} << (bits - 1), true};
+}
+
+Number format_max(const ValueFormat& format) {
+    const std::uint64_t bits = format.bit_size == 0 || format.bit_size > 64 ? 64 : format.bit_size;
+    return Number::from_unsigned(format.is_signed ? width_mask(bits - 1) : width_mask(bits));
+}
+
+bool less(const Number& a, const Number& b) {
+    const bool a_negative = a.negative && a.magnitude != 0;
+    const bool b_negative = b.negative && b.magnitude != 0;
+    if (a_negative != b_negative) return a_negative;
+    if (a_negative) return a.magnitude > b.magnitude;
+    return a.magnitude < b.magnitude;
+}
+
+}  // namespace esi::rules

@@ -1,0 +1,35 @@
+#include "check/pdo_entry_type.hpp"
+
+#include "esi/number.hpp"
+
+namespace esi::rules {
+
+namespace {
+// A DataType on a BaseType loop has no size or base (od-type-cycle reports the loop).
+bool in_cycle(const TypeIndex& types, std::string_view name) {
+    const DataType* t = types.find(name);
+    return t && t->base_type && types.in_base_type_cycle(*t);
+}
+}  // namespace
+
+EntryType entry_type(const TypeIndex& types, const PdoEntry& entry) {
+    EntryType out;
+    if (!entry.data_type) return out;
+    const std::string_view text = trim(*entry.data_type);
+    if (text.empty()) return out;
+    out.present = true;
+    std::string_view culprit;
+    const TypeNameStatus status = types.status(text, &culprit);
+    // "UINT16" is a non-standard spelling unless the Dictionary defines a type of that name.
+    if (status == TypeNameStatus::nonstandard) {
+        out.nonstandard_name = culprit;
+        out.standard_name = standard_type_name_for(culprit);
+    }
+    out.known = status == TypeNameStatus::resolved && !in_cycle(types, text);
+    if (!out.known) return out;
+    out.basic = types.basic(text);
+    out.bit_size = types.bit_size(text).value_or(0);
+    return out;
+}
+
+}  // namespace esi::rules

@@ -1,0 +1,181 @@
+// pdo-… checks of PDO entries against the objects they map (S17 of the domain notes): the object
+// and sub-index exist, BitLen and DataType (including signedness) agree with the object, and the
+// object may be mapped in that direction.
+#include <algorithm>
+
+#include "check/od_text.hpp"
+#include "check/pdo_checks.hpp"
+#include "check/pdo_entry_type.hpp"
+#include "check/pdo_scope.hpp"
+#include "check/queries.hpp"
+
+namespace esi::rules::pdo {
+
+namespace {
+
+// Entries whose object can be looked up: not padding, a readable index that does not depend on
+// the slot a module sits in.
+bool addresses_an_object(const PdoEntry& entry) {
+    return !entry.is_padding() && !entry.index_invalid && !depends_on_slot(entry);
+}
+
+// Oversampling PDOs (OSFac/OSIndexInc) are repeated with shifted entry indices, so their entries
+// do not name the objects the Dictionary describes one to one.
+bool is_oversampling(const Pdo& pdo) { return pdo.os_fac || pdo.os_index_inc; }
+
+// Objects that ETG profiles define and that masters know without the ESI describing them:
+// SM communication/diagnosis objects 0x10F0-0x10FF (e.g. 0x10F4 external synchronisation status),
+// TxPDO communication parameters 0x1800-0x19FF (sub-index 7 TxPDO state, 9 TxPDO toggle;
+// ETG.1000.6) and the modular device profile area 0xF000-0xFFFF (ETG.5001). Beckhoff maps them
+// routinely while its ESI Dictionaries leave them out.
+bool is_profile_infrastructure(std::uint32_t index) {
+    return (index >= 0x10F0 && index <= 0x10FF) || (index >= 0x1800 && index <= 0x19FF) || index >= 0xF000;
+}
+
+// A PDO entry that names an object, with the owner's Dictionary and types at hand.
+struct MappedEntry {
+    const PdoScope& scope;
+    const DictionaryIndex& dictionary;
+    const TypeIndex& types;
+    const Pdo& pdo;
+    const PdoEntry& entry;
+};
+
+template <class F>
+void for_each_mapped_entry(const EsiDocument& document, bool complete_dictionaries_only, F&& f) {
+    for (const auto& scope : pdo_scopes(document)) {
+        if (!scope.dictionary || scope.dictionary->objects.empty()) continue;
+        if (complete_dictionaries_only && !scope.dictionary_is_complete) continue;
+        const DictionaryIndex dictionary(scope.dictionary);
+        const TypeIndex types(scope.dictionary);
+        scope.for_each_pdo([&](const Pdo& pdo) {
+            if (is_oversampling(pdo)) return;
+            for (const auto& entry : pdo.entries)
+                if (addresses_an_object(entry)) f(MappedEntry{scope, dictionary, types, pdo, entry});
+        });
+    }
+}
+
+std::string object_label(const Object& object) {
+    std::string out = "object " + object_address(object.index);
+    if (const std::string& name = primary_text(object.names); !name.empty()) out += " '" + name + "'";
+    return out;
+}
+
+std::string subindex_list(const ObjectLayout& layout) {
+    if (layout.entries.empty()) return "no sub-entries";
+    std::uint32_t low = layout.entries.front().subindex;
+    std::uint32_t high = low;
+    for (const auto& e : layout.entries) {
+        low = std::min(low, e.subindex);
+        high = std::max(high, e.subindex);
+    }
+    if (low == high) return "only subindex " + std::to_string(low);
+    return "subindices " + std::to_string(low) + "-" + std::to_string(high);
+}
+
+SourcePos index_or_entry(const PdoEntry& entry) { return entry.index_pos.line ? entry.index_pos : entry.pos; }
+
+// "object #x6064 'Position actual value'" for a VAR, "object entry #x6000:02 'Underrange'" for a
+// sub-entry of a record or array.
+std::string target_label(const Object& object, const ObjectEntry& target) {
+    if (!target.type_item && target.subindex == 0) return object_label(object);
+    std::string out = "object entry " + entry_address(object.index, target.subindex);
+    if (!target.name.empty()) out += " '" + target.name + "'";
+    return out;
+}
+
+}  // namespace
+
+void check_entry_object_missing(const EsiDocument& document, RuleContext& context) {
+    for_each_mapped_entry(document, true, [&](const MappedEntry& m) {
+        const DictionaryIndex& dictionary = m.dictionary;
+        const PdoEntry& entry = m.entry;
+        if (is_profile_infrastructure(entry.index)) return;
+        const Object* object = dictionary.object(entry.index);
+        if (!object) {
+            context.report(index_or_entry(entry), entry_label(entry) + " maps object " + object_address(entry.index) +
+                                                      ", which the device's Dictionary does not contain");
+            return;
+        }
+        const ObjectLayout* layout = dictionary.layout(entry.index);
+        if (layout->entry(entry.effective_subindex())) return;
+        // An object whose type does not resolve has no known sub-entries (od-type-unresolved says why).
+        const DataType* type = m.types.find(object->type);
+        if (m.types.status(object->type) != TypeNameStatus::resolved || (type && type->base_type && m.types.in_base_type_cycle(*type)))
+            return;
+        context.report(index_or_entry(entry), entry_label(entry) + " maps subindex " + std::to_string(entry.effective_subindex()) +
+                                                  " of " + object_label(*object) + ", which has " + subindex_list(*layout),
+                       {context.note(object->pos, "the object is declared here")});
+    });
+}
+
+void check_entry_object_type(const EsiDocument& document, RuleContext& context) {
+    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+        const DictionaryIndex& dictionary = m.dictionary;
+        const PdoEntry& entry = m.entry;
+        const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
+        if (!target || !target->basic) return;
+        const EntryType type = entry_type(m.types, entry);
+        if (!type.known || !type.basic) return;
+        // A size difference is pdo-entry-object-bitlen's finding, which names both types.
+        if (target->bit_size != 0 && entry.bit_len != target->bit_size) return;
+        const ValueKind written = value_kind(*type.basic);
+        const ValueKind actual = value_kind(*target->basic);
+        if (written == actual || written == ValueKind::other || actual == ValueKind::other) return;
+        const Object* object = dictionary.object(entry.index);
+        context.report(entry.data_type_pos.line ? entry.data_type_pos : entry.pos,
+                       entry_label(entry) + " has DataType " + *entry.data_type + " (" + std::string(to_string(written)) + ") but " +
+                           target_label(*object, *target) + " is " + target->type + " (" + std::string(to_string(actual)) +
+                           "); a master would misread its value",
+                       {context.note(object->pos, "the object is declared here")});
+    });
+}
+
+void check_entry_object_bitlen(const EsiDocument& document, RuleContext& context) {
+    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+        const DictionaryIndex& dictionary = m.dictionary;
+        const PdoEntry& entry = m.entry;
+        if (entry.bit_len == 0 || entry.bit_len_pos.line == 0) return;
+        const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
+        if (!target || target->bit_size == 0 || target->bit_size == entry.bit_len) return;
+        // When BitLen already disagrees with the entry's own DataType, pdo-entry-bitlen-type reports it.
+        const EntryType type = entry_type(m.types, entry);
+        if (type.known && type.bit_size != 0 && type.bit_size != entry.bit_len) return;
+        const Object* object = dictionary.object(entry.index);
+        std::string written = entry.data_type && !entry.data_type->empty() ? " (" + *entry.data_type + ")" : "";
+        context.report(entry.bit_len_pos, entry_label(entry) + " has BitLen " + std::to_string(entry.bit_len) + written + " but " +
+                                              target_label(*object, *target) + " is " + target->type + ", " + bits_text(target->bit_size),
+                       {context.note(object->pos, "the object is declared here")});
+    });
+}
+
+void check_entry_not_mappable(const EsiDocument& document, RuleContext& context) {
+    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+        const DictionaryIndex& dictionary = m.dictionary;
+        const Pdo& pdo = m.pdo;
+        const PdoEntry& entry = m.entry;
+        const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
+        if (!target) return;
+        const Object* object = dictionary.object(entry.index);
+        // The sub-item's own flags win; a record's object-level flags cover sub-items without.
+        const std::optional<std::string>* mapping = nullptr;
+        if (target->flags && target->flags->pdo_mapping) mapping = &target->flags->pdo_mapping;
+        else if (object->flags && object->flags->pdo_mapping) mapping = &object->flags->pdo_mapping;
+        // Without any PdoMapping flag the ESI says nothing about mappability: generators such as
+        // SOES's and Beckhoff's own communication objects (0x1C32:20, 0x1800:09) omit it, and
+        // devices map them all the same.
+        if (!mapping) return;
+        const bool rx = pdo.direction == PdoDirection::rx;
+        const char wanted = rx ? 'r' : 't';
+        const std::string& flag = **mapping;
+        for (char c : flag)
+            if ((c | 0x20) == wanted) return;
+        std::string message = entry_label(entry) + " is mapped into " + std::string(pdo.element_name()) + " " +
+                              object_address(pdo.index) + " but " + target_label(*object, *target) + " has PdoMapping '" + flag +
+                              "'; " + (rx ? "an RxPdo needs R" : "a TxPdo needs T");
+        context.report(index_or_entry(entry), std::move(message), {context.note(object->pos, "the object is declared here")});
+    });
+}
+
+}  // namespace esi::rules::pdo

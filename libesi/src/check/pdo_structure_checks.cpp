@@ -1,0 +1,159 @@
+// pdo-… checks on the PDO list of a device or module: index ranges, SyncManager references,
+// duplicates, Exclude references and the 8-bit limits of the CoE mapping and assignment objects.
+#include <map>
+#include <unordered_set>
+
+#include "check/od_text.hpp"
+#include "check/pdo_checks.hpp"
+#include "check/pdo_scope.hpp"
+#include "check/queries.hpp"
+#include "esi/check/limits.hpp"
+
+namespace esi::rules::pdo {
+
+namespace {
+
+// ETG.1000.6 object dictionary areas: RxPdo mapping 0x1600-0x17FF, TxPdo mapping 0x1A00-0x1BFF.
+constexpr IndexRange rx_mapping_area{0x1600, 0x17FF};
+constexpr IndexRange tx_mapping_area{0x1A00, 0x1BFF};
+
+std::string range_text(const IndexRange& range) { return object_address(range.first) + "-" + object_address(range.last); }
+
+std::string pdo_name(const Pdo& pdo) { return std::string(pdo.element_name()) + " " + object_address(pdo.index); }
+
+// A PDO whose Index is missing or unreadable was reported by the reader; its index means nothing.
+bool has_index(const Pdo& pdo) { return pdo.index_pos.line != 0 && !pdo.index_invalid; }
+
+SourcePos index_or_element(const Pdo& pdo) { return pdo.index_pos.line != 0 ? pdo.index_pos : pdo.pos; }
+
+std::string sm_list(const Device& device) {
+    if (device.sms.empty()) return "declares no Sm";
+    if (device.sms.size() == 1) return "declares only SM0";
+    return "declares SM0-SM" + std::to_string(device.sms.size() - 1);
+}
+
+}  // namespace
+
+void check_index_range(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : pdo_scopes(document)) {
+        // The ranges are those of CoE mapping objects. Devices without CoE (simple terminals,
+        // SoE drives whose MDT/AT carry IDNs) number their PDOs freely in the SII.
+        if (scope.device && !(scope.device->mailbox && scope.device->mailbox->coe)) continue;
+        scope.for_each_pdo([&](const Pdo& pdo) {
+            if (!has_index(pdo)) return;
+            const bool rx = pdo.direction == PdoDirection::rx;
+            const IndexRange& area = rx ? rx_mapping_area : tx_mapping_area;
+            if (area.contains(pdo.index)) return;
+            std::string message = std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is outside the " +
+                                  std::string(pdo.element_name()) + " mapping area " + range_text(area);
+            const IndexRange& other = rx ? tx_mapping_area : rx_mapping_area;
+            if (other.contains(pdo.index))
+                message += "; " + object_address(pdo.index) + (rx ? " is a TxPdo" : " is an RxPdo") + " index, so the PDO is probably declared with the wrong element";
+            context.report(pdo.index_pos, std::move(message));
+        });
+    }
+}
+
+void check_sm_unknown(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : pdo_scopes(document)) {
+        if (!scope.device) continue;  // a module's Sm refers to the SMs of the device it is plugged into
+        const Device& device = *scope.device;
+        scope.for_each_pdo([&](const Pdo& pdo) {
+            if (!pdo.sm || *pdo.sm < device.sms.size()) return;
+            context.report(pdo.pos, pdo_name(pdo) + " is assigned to SM" + std::to_string(*pdo.sm) + " (Sm=\"" +
+                                        std::to_string(*pdo.sm) + "\"), but the device " + sm_list(device));
+        });
+    }
+}
+
+void check_sm_direction(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : pdo_scopes(document)) {
+        if (!scope.device) continue;
+        const Device& device = *scope.device;
+        scope.for_each_pdo([&](const Pdo& pdo) {
+            if (!pdo.sm || *pdo.sm >= device.sms.size()) return;
+            const SyncManager& sm = device.sms[*pdo.sm];
+            const bool rx = pdo.direction == PdoDirection::rx;
+            const SmRole expected = rx ? SmRole::outputs : SmRole::inputs;
+            SmRole role = role_from_text(sm.type);
+            if (role == SmRole::unknown) {
+                if (!sm.control_byte) return;
+                // Without a type text the ControlByte decides. Devices without a mailbox run
+                // process data through one-buffer SMs (#x44/#x46) that look like mailbox SMs by
+                // their mode bits, so there only the direction counts.
+                role = device.mailbox ? sm_role(sm)
+                                      : (control_byte_is_write(*sm.control_byte) ? SmRole::outputs : SmRole::inputs);
+            }
+            if (role == expected) return;
+            // MBoxOut, MBoxIn, Outputs and Inputs all take "an".
+            std::string message = pdo_name(pdo) + " is assigned to SM" + std::to_string(*pdo.sm) + ", which is an " +
+                                  std::string(to_string(role)) + " SyncManager; " +
+                                  (rx ? "RxPdos carry outputs (master to slave) and belong to an Outputs SM"
+                                      : "TxPdos carry inputs (slave to master) and belong to an Inputs SM");
+            context.report(pdo.pos, std::move(message), {context.note(sm.pos, "SM" + std::to_string(*pdo.sm) + " is declared here")});
+        });
+    }
+}
+
+void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : pdo_scopes(document)) {
+        std::map<std::uint32_t, const Pdo*> seen;
+        scope.for_each_pdo([&](const Pdo& pdo) {
+            if (!has_index(pdo)) return;
+            const auto [it, inserted] = seen.emplace(pdo.index, &pdo);
+            if (inserted) return;
+            const Pdo& first = *it->second;
+            context.report(pdo.index_pos,
+                           std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is already used by " +
+                               (first.direction == pdo.direction ? "another " : "a ") + std::string(first.element_name()) +
+                               (scope.device ? " of this device" : " of this module"),
+                           {context.note(index_or_element(first), "first declared here")});
+        });
+    }
+}
+
+void check_exclude_unknown(const EsiDocument& document, RuleContext& context) {
+    for (const auto& scope : pdo_scopes(document)) {
+        // Drives list every other PDO as excluded (Beckhoff AX2xxx): look indices up in a set.
+        std::unordered_set<std::uint32_t> indices;
+        scope.for_each_pdo([&](const Pdo& pdo) { indices.insert(pdo.index); });
+        scope.for_each_pdo([&](const Pdo& pdo) {
+            for (const auto& exclude : pdo.excludes) {
+                if (exclude.depend_on_slot.value_or(false) || exclude.depend_on_slot_group.value_or(false)) continue;
+                if (indices.count(exclude.index)) continue;
+                context.report(exclude.pos, pdo_name(pdo) + " excludes " + object_address(exclude.index) + ", which is not a PDO of this " +
+                                                (scope.device ? "device" : "module"));
+            }
+        });
+    }
+}
+
+void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
+    // ETG.1000.6: a mapping object (0x16xx/0x1Axx) and an assignment object (0x1C1x) count their
+    // sub-entries in the 8-bit sub-index 0, and a mapping entry keeps the length in 8 bits.
+    constexpr std::size_t max_subentries = 255;
+    constexpr std::uint32_t max_bit_len = 255;
+    for (const auto& scope : pdo_scopes(document)) {
+        for (const auto* list : {scope.rx_pdos, scope.tx_pdos}) {
+            if (list->size() > max_subentries) {
+                const Pdo& first_excess = (*list)[max_subentries];
+                context.report(first_excess.pos, "this is " + std::string(first_excess.element_name()) + " number " +
+                                                     std::to_string(max_subentries + 1) + " of " + std::to_string(list->size()) +
+                                                     "; a PDO assignment object lists at most 255 PDOs");
+            }
+            for (const auto& pdo : *list) {
+                if (pdo.entries.size() > max_subentries)
+                    context.report(pdo.pos, pdo_name(pdo) + " has " + std::to_string(pdo.entries.size()) +
+                                                " entries; a PDO mapping object holds at most 255");
+                for (const auto& entry : pdo.entries) {
+                    if (entry.bit_len <= max_bit_len) continue;
+                    context.report(entry.bit_len_pos.line ? entry.bit_len_pos : entry.pos,
+                                   entry_label(entry) + " has BitLen " +
+                                       std::to_string(entry.bit_len) + "; a PDO mapping entry stores the length in 8 bits (at most 255)");
+                }
+            }
+        }
+    }
+}
+
+}  // namespace esi::rules::pdo

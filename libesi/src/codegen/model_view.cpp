@@ -1,0 +1,74 @@
+#include <filesystem>
+
+#include "codegen/document_view.hpp"
+#include "esi/codegen/identifier.hpp"
+#include "codegen/values.hpp"
+
+namespace esi::codegen {
+
+std::vector<DeviceViewEntry> selected_devices(const EsiDocument& document, const ViewOptions& options) {
+    std::vector<DeviceViewEntry> out;
+    IdentifierScope device_scope;
+    for (const EtherCATInfo& info : document.infos) {
+        for (const Device& device : info.devices) {
+            if (options.device && !options.device->matches(device)) continue;
+            DeviceViewEntry entry;
+            entry.info = &info;
+            entry.device = &device;
+            const std::string base = c_identifier(device.type.text.empty() ? primary_text(device.names) : device.type.text, "device");
+            // Revisions of one product share a Type text; the revision tells them apart.
+            entry.c_name = device_scope.claim(base, "r" + hex(device.type.revision_no.value_or(0), 8).substr(2));
+            out.push_back(std::move(entry));
+        }
+    }
+    return out;
+}
+
+DocumentView build_document_view(const EsiDocument& document, const ViewOptions& options) {
+    DocumentView out;
+    ViewContext context{document.path, &out.diagnostics};
+
+    out.root["view_version"] = model_view_version;
+    out.root["generator"] = "esi-gen";
+    // The file name only: the same source gives the same output wherever it is checked out.
+    out.root["source_file"] = std::filesystem::path(document.path).filename().string();
+    out.root["vendor"] = document.infos.empty() ? vendor_view(EtherCATInfo{}) : vendor_view(document.infos.front());
+
+    out.devices = selected_devices(document, options);
+    for (auto& entry : out.devices) {
+        const std::string prefix = options.symbol_prefix ? c_identifier(*options.symbol_prefix, "esi") : entry.c_name;
+        entry.view = device_view(*entry.info, *entry.device, entry.c_name, prefix, context);
+    }
+    if (out.devices.empty()) {
+        out.diagnostics.emplace(Severity::error, "codegen-no-device",
+                                options.device ? "no device matches the --device selection" : "the source describes no device",
+                                document.path, document.root_pos);
+    }
+    return out;
+}
+
+Json document_json(const DocumentView& view) {
+    Json j = view.root;
+    j["device_count"] = view.devices.size();
+    Json devices = Json::array();
+    for (const auto& d : view.devices) devices.push_back(d.view);
+    j["devices"] = std::move(devices);
+    return j;
+}
+
+Json device_context(const DocumentView& view, DeviceViewEntry&& device) {
+    Json j = view.root;
+    j["device"] = std::move(device.view);
+    return j;
+}
+
+ModelViewText model_view_json(const EsiDocument& document, const ViewOptions& options) {
+    DocumentView view = build_document_view(document, options);
+    ModelViewText out;
+    // Strings from DefaultData may hold any bytes: invalid UTF-8 is replaced, never thrown about.
+    out.json = document_json(view).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+    out.diagnostics = std::move(view.diagnostics);
+    return out;
+}
+
+}  // namespace esi::codegen
