@@ -1,6 +1,7 @@
 // Numbers everywhere (issue 6 §2): `#x` without digits, values past 64 bits, values past their
 // field, negative sizes, BitLen 0 and 65536. Each is a located diagnostic from the reader or a
-// rule, esi-lint exits 1, and no number reaches the model as a silently wrapped value.
+// rule, esi-lint exits 1, and no number reaches the model as a silently wrapped value; the SII
+// builder refuses a BitLen its one-byte field cannot hold.
 
 #include <gtest/gtest.h>
 
@@ -33,6 +34,8 @@ const NumberCase cases[] = {
     {"negative EEPROM size", "<ByteSize>2048</ByteSize>", "<ByteSize>-2048</ByteSize>", "xml-number-range", "out of range"},
     {"negative BitSize", "<BitSize>144</BitSize>", "<BitSize>-144</BitSize>", "xml-number-range", "out of range"},
     {"negative BitLen", "<BitLen>8</BitLen>", "<BitLen>-8</BitLen>", "xml-number-range", "out of range"},
+    {"BitLen 0", "<BitLen>8</BitLen>", "<BitLen>0</BitLen>", "pdo-mapping-limits", "has BitLen 0"},
+    {"BitLen 65536", "<BitLen>8</BitLen>", "<BitLen>65536</BitLen>", "pdo-mapping-limits", "has BitLen 65536"},
 };
 
 }  // namespace
@@ -73,4 +76,15 @@ TEST(HostileNumbers, EsiLintExitsOneOnEveryCase) {
     const auto lint = esi::test::run_child({esi::test::tool("esi-lint").string(), "--format", "json", dir.path().string()});
     EXPECT_EQ(lint.exit_code, 1) << lint.err;
     for (const auto& c : cases) EXPECT_NE(lint.out.find(c.rule), std::string::npos) << c.name;
+}
+
+TEST(HostileNumbers, BitLenBeyondEightBitsIsNotWrittenToAnImage) {
+    esi::test::TempDir dir;
+    esi::test::write_text(dir / "device.xml", esi::test::replace_once(esi::test::sample_esi(), "<BitLen>8</BitLen>", "<BitLen>65536</BitLen>"));
+    esi::test::write_text(dir / "out.bin", "previous image");
+    const auto build = esi::test::run_child(
+        {esi::test::tool("esi-sii").string(), "build", (dir / "device.xml").string(), "-o", (dir / "out.bin").string()});
+    EXPECT_EQ(build.exit_code, 2);
+    EXPECT_NE(build.err.find("[sii-value-range]"), std::string::npos) << build.err;
+    EXPECT_EQ(esi::test::read_text(dir / "out.bin"), "previous image");
 }
