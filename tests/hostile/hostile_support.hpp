@@ -19,6 +19,7 @@ struct ChildOptions {
     bool ignore_sigxfsz = false;                    // write() then fails with EFBIG instead of a kill
     std::optional<std::chrono::microseconds> kill_after;  // SIGKILL the child after this long
     std::string stdin_data;
+    std::string stdin_file;  // when set, the child's stdin is this file (e.g. /dev/zero)
 };
 
 struct ChildResult {
