@@ -393,3 +393,20 @@ TEST(HostileXml, AZeroByteFileHasNoRootElement) {
     EXPECT_EQ(lint.exit_code, 1);
     EXPECT_NE(lint.out.find("empty.xml:1:1: error: not well-formed: no root element [xml-syntax]"), std::string::npos) << lint.out;
 }
+
+TEST(HostileXml, AnEndlessStdinIsCutAtTheInputLimit) {
+    esi::test::ChildOptions options;
+    options.stdin_file = "/dev/zero";
+    const auto lint = run_child({lint_tool(), "-"}, options);
+    EXPECT_EQ(lint.exit_code, 2) << lint.err;
+    EXPECT_NE(lint.out.find("<stdin>: error: cannot read: larger than 256 MiB"), std::string::npos) << lint.out;
+    // Bound: the 256 MiB input limit, plus the growth of the buffer that holds it, plus 64 MB.
+    EXPECT_LT(lint.max_rss_kb, (2 * 256 + 64) * 1024 * memory_scale());
+}
+
+TEST(HostileXml, AnEndlessFileIsCutAtTheInputLimit) {
+    const esi::ReadResult read = esi::read_esi_file("/dev/zero");
+    EXPECT_FALSE(read.document);
+    ASSERT_NE(find(read.diagnostics, "io-error"), nullptr);
+    EXPECT_NE(find(read.diagnostics, "io-error")->message.find("input size limit"), std::string::npos);
+}
