@@ -17,6 +17,23 @@ cmake --build build-fuzz
 targets=${*:-$(cd build-fuzz/fuzz && ls *_fuzzer)}
 shared=../shared/corpus
 mkdir -p build-fuzz/logs
+# diff_fuzzer seeds from the corpus: revision pairs of one product family, joined by the four
+# NUL bytes the target splits at (fuzz/diff_fuzzer.cpp).
+if [ -d "$shared/esi" ]; then
+    mkdir -p build-fuzz/seeds/diff
+    while read -r old new; do
+        [ -f "$shared/esi/$old" ] && [ -f "$shared/esi/$new" ] || continue
+        { cat "$shared/esi/$old"; printf '\000\000\000\000'; cat "$shared/esi/$new"; } >"build-fuzz/seeds/diff/$old+$new"
+    done <<'PAIRS'
+MetalMusings__EaserCAT_7000__MyOwnEtherCATDevice__2025-02.xml MetalMusings__EaserCAT_7000__MyOwnEtherCATDevice__2025-10.xml
+SMC__EX250-SEN1-X156__dls-ethercat__2011-05.xml SMC__EX250-SEN1-X156__dls-ethercat__2014-03.xml
+ProjectMARCH__BP-GES__ethercat-slaves__2020-02.xml ProjectMARCH__BP-GES__ethercat-slaves__2020-03.xml
+Beckhoff__EK13xx__dls-ethercat__2018-01.xml Beckhoff__EK13xx__dls-ethercat__2018-06.xml
+HPMicro__ECAT_CIA402__hpm_sdk__2024-09.xml HPMicro__ECAT_CIA402__hpm_sdk__2025-12.xml
+PollenRobotics__NeckOrbita3d_fw1.0__poulpe.xml PollenRobotics__NeckOrbita3d_fw1.5__poulpe.xml
+Synapticon__Somanet_CiA402-single__siitool__2013.xml Synapticon__Somanet_CiA402-single__siitool__2016.xml
+PAIRS
+fi
 status=0
 for target in $targets; do
     work=build-fuzz/corpus/$target
@@ -29,10 +46,10 @@ for target in $targets; do
     seeds=""
     dict=fuzz/esi.dict
     case $target in
-        xml_* | writer_*) seeds="samples/esi tests/rules/fixtures $shared/esi" ;;
+        xml_* | writer_* | codegen_*) seeds="samples/esi tests/rules/fixtures $shared/esi" ;;
         yaml_*) seeds="samples tests/yaml"; dict=fuzz/yaml.dict ;;
         sii_*) seeds="$shared/sii fuzz/seeds/sii"; dict=fuzz/sii.dict ;;
-        diff_*) seeds="fuzz/seeds/diff" ;;
+        diff_*) seeds="fuzz/seeds/diff build-fuzz/seeds/diff" ;;
     esac
     existing=""
     for s in $seeds; do [ -e "$s" ] && existing="$existing $s"; done
