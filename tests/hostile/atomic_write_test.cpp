@@ -7,7 +7,9 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
+#include <map>
 #include <random>
 
 #include "esi/io/atomic_write.hpp"
@@ -138,4 +140,79 @@ TEST(NothingLost, AReadOnlyOutputDirectoryLeavesTheTarget) {
     const auto build = run_child({sii_tool(), "build", sample_path(), "-o", (dir / "out" / "image.bin").string()});
     EXPECT_EQ(build.exit_code, 2);
     EXPECT_EQ(esi::test::read_text(dir / "out" / "image.bin"), "previous image");
+}
+
+namespace {
+
+std::string gen_tool() { return esi::test::tool("esi-gen").string(); }
+
+// An output directory holding "old <name>" in every file esi-gen writes.
+std::map<std::string, std::string> seed_old_outputs(const std::filesystem::path& out, const std::map<std::string, std::string>& fresh) {
+    std::map<std::string, std::string> old;
+    for (const auto& [name, content] : fresh) {
+        old[name] = "old " + name + "\n";
+        esi::test::write_text(out / name, old[name]);
+    }
+    return old;
+}
+
+}  // namespace
+
+TEST(NothingLost, SigkillingEsiGenLeavesEveryFileOldOrNew) {
+    esi::test::TempDir dir;
+    // The kill delays spread over 1.5 times the fastest of three complete runs: a first run slowed
+    // by a cold cache or a busy machine would otherwise let every killed run finish first.
+    auto duration = std::chrono::microseconds::max();
+    for (int i = 0; i < 3; ++i) {
+        const auto started = std::chrono::steady_clock::now();
+        const auto reference = run_child({gen_tool(), sample_path(), "-o", (dir / "reference").string()});
+        duration = std::min(duration, std::chrono::duration_cast<std::chrono::microseconds>(std::chrono::steady_clock::now() - started));
+        ASSERT_EQ(reference.exit_code, 0) << reference.err;
+    }
+    const auto fresh = esi::test::snapshot(dir / "reference");
+    ASSERT_GE(fresh.size(), 5u);
+
+    std::mt19937 random(6);
+    std::uniform_int_distribution<long> delay(0, duration.count() * 3 / 2);
+    int killed = 0, partly_new = 0;
+    for (int round = 0; round < 30; ++round) {
+        const auto out = dir / ("run" + std::to_string(round));
+        const auto old = seed_old_outputs(out, fresh);
+        esi::test::ChildOptions options;
+        options.kill_after = std::chrono::microseconds(delay(random));
+        const auto gen = run_child({gen_tool(), sample_path(), "-o", out.string()}, options);
+        if (gen.signal == SIGKILL) ++killed;
+        int new_files = 0;
+        for (const auto& [name, content] : esi::test::snapshot(out)) {
+            if (fresh.count(name) && content == fresh.at(name)) {
+                ++new_files;
+                continue;
+            }
+            if (old.count(name) && content == old.at(name)) continue;
+            // Only a complete copy may carry a temporary name (named just before its rename).
+            const bool complete_copy = std::any_of(fresh.begin(), fresh.end(), [&](const auto& f) { return f.second == content; });
+            EXPECT_TRUE(complete_copy && name.find(".tmp") != std::string::npos)
+                << "round " << round << ": " << name << " is neither the old nor the new file (" << content.size() << " bytes)";
+        }
+        if (new_files > 0 && new_files < static_cast<int>(fresh.size())) ++partly_new;
+    }
+    std::cout << "[          ] " << killed << " of 30 esi-gen runs killed; " << partly_new
+              << " killed while renaming (some files new, the others old, none half-written)\n";
+    EXPECT_GT(killed, 0);
+}
+
+TEST(NothingLost, EsiGenUnderAFileSizeLimitWritesNothing) {
+    esi::test::TempDir dir;
+    ASSERT_EQ(run_child({gen_tool(), sample_path(), "-o", (dir / "reference").string()}).exit_code, 0);
+    const auto fresh = esi::test::snapshot(dir / "reference");
+    std::size_t largest = 0;
+    for (const auto& [name, content] : fresh) largest = std::max(largest, content.size());
+    const auto old = seed_old_outputs(dir / "out", fresh);
+    esi::test::ChildOptions options;
+    options.file_size_limit = largest - 1;  // every file but the largest fits
+    options.ignore_sigxfsz = true;
+    const auto gen = run_child({gen_tool(), sample_path(), "-o", (dir / "out").string()}, options);
+    EXPECT_EQ(gen.exit_code, 1) << gen.err;
+    EXPECT_NE(gen.err.find("[io-error]"), std::string::npos) << gen.err;
+    EXPECT_TRUE(esi::test::snapshot(dir / "out") == old) << "a failed set must leave every file as it was";
 }

@@ -50,3 +50,34 @@ TEST(Determinism, EsiSiiBuildsTheSameBytesTwice) {
         EXPECT_EQ(esi::test::read_text(a), esi::test::read_text(b)) << format;
     }
 }
+
+TEST(Determinism, EsiGenWritesTheSameFilesTwice) {
+    esi::test::TempDir dir;
+    const auto sample = (esi::test::source_dir() / "samples/esi/example-digital-io.xml").string();
+    for (const std::string out : {"first", "second"}) {
+        const auto gen = esi::test::run_child({esi::test::tool("esi-gen").string(), sample, "-o", (dir / out).string()});
+        ASSERT_EQ(gen.exit_code, 0) << gen.err;
+    }
+    const auto first = esi::test::snapshot(dir / "first");
+    const auto second = esi::test::snapshot(dir / "second");
+    EXPECT_GE(first.size(), 5u);
+    EXPECT_TRUE(first == second) << "esi-gen wrote different files on the second run";
+}
+
+TEST(Determinism, EsiDiffReportsAreTheSameTwice) {
+    std::vector<std::pair<std::string, std::string>> pairs = {
+        {(esi::test::source_dir() / "tests/diff/data/old.xml").string(), (esi::test::source_dir() / "tests/diff/data/new.xml").string()}};
+    if (esi::test::have_shared_corpus())
+        pairs.emplace_back((esi::test::corpus_esi_dir() / "Beckhoff__EK13xx__dls-ethercat__2018-01.xml").string(),
+                           (esi::test::corpus_esi_dir() / "Beckhoff__EK13xx__dls-ethercat__2018-06.xml").string());
+    for (const auto& [old_file, new_file] : pairs) {
+        for (const std::string format : {"json", "text", "markdown"}) {
+            const auto a = esi::test::run_child({esi::test::tool("esi-diff").string(), old_file, new_file, "--format", format});
+            const auto b = esi::test::run_child({esi::test::tool("esi-diff").string(), old_file, new_file, "--format", format});
+            ASSERT_TRUE(a.exit_code == 0 || a.exit_code == 1) << a.err;
+            EXPECT_FALSE(a.out.empty());
+            EXPECT_EQ(a.exit_code, b.exit_code);
+            EXPECT_TRUE(a.out == b.out) << format << ": " << new_file;
+        }
+    }
+}
