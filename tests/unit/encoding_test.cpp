@@ -96,3 +96,21 @@ TEST(SourceText, PositionsCountCodePointsAndLines) {
     EXPECT_EQ(esi::count_newlines(text), 3u);
     EXPECT_EQ(esi::count_code_points("\xE2\x82\xAC" "abcdefghijk\xC3\xA4"), 13u);
 }
+
+TEST(SourceText, CursorAgreesWithTheLineIndexAtEveryOffset) {
+    // Lines of mixed length with CRLF, 2-, 3- and 4-byte characters at word boundaries, a
+    // newline as the last byte and runs longer than one 8-byte word without any newline.
+    std::string text;
+    const std::string pieces[] = {"<a>", "\r\n", "\xC3\xA4", "\xE2\x82\xAC", "\xF0\x9F\x98\x80", "\n", "abcdefghijklmnopq", "\t\t"};
+    for (int i = 0; i < 400; ++i) text += pieces[(i * 7 + i / 3) % 8];
+    text += "\n";
+    esi::SourceText source("t.xml", text);
+    for (std::size_t step : {std::size_t{1}, std::size_t{3}, std::size_t{8}, std::size_t{13}, std::size_t{64}}) {
+        esi::PositionCursor cursor(source);
+        for (std::size_t offset = 0; offset <= text.size(); offset += step)
+            ASSERT_EQ(cursor.position_of(offset), source.position_of(offset)) << "offset " << offset << " step " << step;
+    }
+    esi::PositionCursor cursor(source);
+    EXPECT_EQ(cursor.position_of(text.size() + 10), source.position_of(text.size()));  // clamped to the end
+    EXPECT_EQ(cursor.position_of(5), source.position_of(5));                            // backwards
+}

@@ -37,6 +37,17 @@ TEST(Number, FullUnsigned64BitRange) {
     EXPECT_EQ(n.value.as_uint64(), 0xFFFFFFFFFFFFFFFFull);
     EXPECT_FALSE(n.value.as_int64().has_value());
     EXPECT_TRUE(n.value.fits_unsigned_bits(64));
+    EXPECT_EQ(parse_number("18446744073709551615").value.as_uint64(), 0xFFFFFFFFFFFFFFFFull);  // the last decimal digit may be 5
+    EXPECT_EQ(parse_number("18446744073709551620").error, NumberError::overflow);
+    EXPECT_EQ(parse_number("184467440737095516150").error, NumberError::overflow);
+}
+
+TEST(Number, TrimsXmlWhiteSpaceOnly) {
+    EXPECT_EQ(esi::trim(" \t\r\n#x10\r\n"), "#x10");
+    EXPECT_EQ(esi::trim("\v1\f"), "\v1\f");  // vertical tab and form feed are not XML white space
+    EXPECT_EQ(esi::trim("\xA0" "1"), "\xA0" "1");
+    EXPECT_EQ(esi::trim(" \t "), "");
+    EXPECT_EQ(parse_number(" 42\t").value.as_uint64(), 42u);
 }
 
 TEST(Number, RejectsMalformed) {

@@ -1,7 +1,12 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <string>
+#include <vector>
+
 #include "esi/model/object_layout.hpp"
 #include "esi/xml/reader.hpp"
+#include "support/test_support.hpp"
 
 namespace {
 
@@ -90,4 +95,76 @@ TEST(ObjectLayout, UnknownTypeIsNotKnown) {
     const auto t = esi::resolve_type(nullptr, "UINT16");
     EXPECT_FALSE(t.known);
     EXPECT_TRUE(esi::resolve_type(nullptr, "UINT").known);
+}
+
+namespace {
+
+void expect_same_layout(const esi::ObjectLayout& a, const esi::ObjectLayout& b, const std::string& where) {
+    EXPECT_EQ(a.code, b.code) << where;
+    ASSERT_EQ(a.entries.size(), b.entries.size()) << where;
+    for (std::size_t i = 0; i < a.entries.size(); ++i) {
+        const esi::ObjectEntry& x = a.entries[i];
+        const esi::ObjectEntry& y = b.entries[i];
+        EXPECT_EQ(x.subindex, y.subindex) << where;
+        EXPECT_EQ(x.name, y.name) << where;
+        EXPECT_EQ(x.type, y.type) << where;
+        EXPECT_EQ(x.basic, y.basic) << where;
+        EXPECT_EQ(x.bit_size, y.bit_size) << where;
+        EXPECT_EQ(x.bit_offset, y.bit_offset) << where;
+        EXPECT_EQ(x.flags, y.flags) << where;
+        EXPECT_EQ(x.info, y.info) << where;
+        EXPECT_EQ(x.type_item, y.type_item) << where;
+    }
+}
+
+// Every object of every Dictionary in a document, laid out both ways.
+void expect_indexed_layouts_match(const esi::EsiDocument& document, const std::string& file) {
+    std::vector<const esi::Dictionary*> dictionaries;
+    if (document.dictionary) dictionaries.push_back(&*document.dictionary);
+    for (const auto& info : document.infos) {
+        for (const auto& device : info.devices)
+            for (const auto& profile : device.profiles)
+                if (profile.dictionary) dictionaries.push_back(&*profile.dictionary);
+        for (const auto& module : info.modules)
+            if (module.profile && module.profile->dictionary) dictionaries.push_back(&*module.profile->dictionary);
+    }
+    for (const esi::Dictionary* dictionary : dictionaries) {
+        const esi::DataTypeIndex index(dictionary);
+        for (const auto& object : dictionary->objects)
+            expect_same_layout(esi::layout_of(dictionary, object), esi::layout_of(index, object),
+                               file + " object " + std::to_string(object.index));
+    }
+}
+
+}  // namespace
+
+TEST(ObjectLayout, DataTypeIndexFindsTheFirstTypeOfAName) {
+    const auto r = esi::read_esi(R"(<EtherCATDict><Dictionary><DataTypes>
+        <DataType><Name>DT1</Name><BitSize>8</BitSize></DataType>
+        <DataType><Name>DT1</Name><BitSize>16</BitSize></DataType>
+        </DataTypes></Dictionary></EtherCATDict>)",
+                                 "d.xml");
+    const auto& dict = *r.document->dictionary;
+    const esi::DataTypeIndex index(&dict);
+    EXPECT_EQ(index.find("DT1"), &dict.data_types[0]);
+    EXPECT_EQ(index.find("DT1"), dict.find_data_type("DT1"));
+    EXPECT_EQ(index.find("DT2"), nullptr);
+    EXPECT_EQ(esi::resolve_type(index, " DT1 ").bit_size, 8u);
+    EXPECT_EQ(esi::DataTypeIndex(nullptr).find("DT1"), nullptr);
+}
+
+TEST(ObjectLayout, IndexedLookupGivesTheDictionaryLayouts) {
+    const auto r = esi::read_esi(dictionary_xml, "d.xml");
+    expect_indexed_layouts_match(*r.document, "d.xml");
+    const esi::DataTypeIndex index(&*r.document->dictionary);
+    EXPECT_TRUE(esi::resolve_type(index, "LOOP_A").cycle);
+}
+
+TEST(ObjectLayout, IndexedLookupGivesTheDictionaryLayoutsOnTheCorpus) {
+    ESI_REQUIRE_CORPUS();
+    for (const auto& entry : std::filesystem::directory_iterator(esi::test::corpus_esi_dir())) {
+        if (entry.path().extension() != ".xml") continue;
+        const auto r = esi::read_esi_file(entry.path());
+        if (r.document) expect_indexed_layouts_match(*r.document, entry.path().filename().string());
+    }
 }

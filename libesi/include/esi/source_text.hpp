@@ -36,7 +36,9 @@ public:
     [[nodiscard]] std::size_t line_count() const { return line_starts().size(); }
 
 private:
-    // Built on first use: a reader walking in document order never needs it.
+    friend class PositionCursor;
+    // Built on first use, once: the reader's PositionCursor and the quoting of diagnostics'
+    // lines share it.
     const std::vector<std::size_t>& line_starts() const;
 
     std::string path_;
@@ -55,13 +57,15 @@ using SourceTextPtr = std::shared_ptr<const SourceText>;
 // order (as a document-order walk produces them); a single-line multi-MB file stays linear.
 class PositionCursor {
 public:
-    explicit PositionCursor(const SourceText& source) : source_(source) {}
+    explicit PositionCursor(const SourceText& source);
     [[nodiscard]] SourcePos position_of(std::size_t offset);
 
 private:
     const SourceText& source_;
+    const std::vector<std::size_t>& line_starts_;
+    std::size_t line_ = 0;  // index in line_starts_ of the line of the previous offset
     std::size_t last_offset_ = 0;
-    SourcePos last_{1, 1};
+    std::uint32_t last_column_ = 1;
 };
 
 }  // namespace esi

@@ -9,6 +9,7 @@
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
 #include "check/od_values.hpp"
+#include "check/rule_cache.hpp"
 #include "esi/model/object_layout.hpp"
 
 namespace esi::rules::od {
@@ -82,8 +83,10 @@ void check_lengths(RuleContext& context, const EntryValues& values, const EntryN
     if (bits == 0) return;
     const std::uint64_t bytes = (bits + 7) / 8;
     // Strings and byte arrays may be given shorter than their maximum length.
+    // (Only a name starting with ARRAY can parse as an array; the test spares a parse per entry.)
     const bool variable = !basic || basic->type_class == TypeClass::visible_string || basic->type_class == TypeClass::octet_string ||
-                          basic->type_class == TypeClass::unicode_string || parse_type_name(type_name).kind == TypeName::Kind::array;
+                          basic->type_class == TypeClass::unicode_string ||
+                          (trim(type_name).starts_with("ARRAY") && parse_type_name(type_name).kind == TypeName::Kind::array);
     const auto check = [&](const std::optional<HexData>& data, std::string_view element) {
         // Empty data (<DefaultData/>) gives no value at all.
         if (!data || !data->valid() || data->text.empty()) return;
@@ -156,10 +159,11 @@ void check_range(RuleContext& context, const EntryValues& values, const EntryNam
 }
 
 template <class F>
-void for_each_valued_entry(const EsiDocument& document, F&& f) {
+void for_each_valued_entry(const EsiDocument& document, RuleContext& context, F&& f) {
     for (const auto& scope : dictionary_scopes(document)) {
         const Dictionary& dictionary = *scope.dictionary;
-        const TypeIndex types(dictionary);
+        const TypeIndex& types = context.cache().types(&dictionary);
+        const DictionaryIndex& objects = context.cache().objects(&dictionary);
         for (const auto& type : dictionary.data_types)
             for (const auto& item : type.sub_items) {
                 if (!item.default_data && !item.default_value && !item.default_string && !item.max_value && !item.min_value) continue;
@@ -168,7 +172,7 @@ void for_each_valued_entry(const EsiDocument& document, F&& f) {
             }
         for (const auto& object : dictionary.objects) {
             if (!object.info) continue;  // no values at all, for the object or its sub-entries
-            const ObjectLayout layout = layout_of(&dictionary, object);
+            const ObjectLayout& layout = objects.layout(object);
             for (const auto& entry : layout.entries) {
                 if (!entry.info) continue;
                 f(values_of(*entry.info), EntryName{&object, entry.subindex, layout.code == ObjectCode::var, nullptr, nullptr},
@@ -225,15 +229,15 @@ void check_flags_value(const EsiDocument& document, RuleContext& context) {
 }
 
 void check_default_length(const EsiDocument& document, RuleContext& context) {
-    for_each_valued_entry(document, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
-                                        const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+    for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
+                                                 const BasicType* basic, std::uint64_t bits, SourcePos pos) {
         check_lengths(context, values, name, type_name, basic, bits, pos);
     });
 }
 
 void check_default_range(const EsiDocument& document, RuleContext& context) {
-    for_each_valued_entry(document, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
-                                        const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+    for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
+                                                 const BasicType* basic, std::uint64_t bits, SourcePos pos) {
         check_range(context, values, name, type_name, basic, bits, pos);
     });
 }

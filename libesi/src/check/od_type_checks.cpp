@@ -10,6 +10,7 @@
 #include "check/od_scope.hpp"
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
+#include "check/rule_cache.hpp"
 #include "esi/data_types.hpp"
 #include "esi/number.hpp"
 
@@ -75,7 +76,7 @@ std::string also_used(std::size_t count) {
 
 void check_type_unresolved(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex types(*scope.dictionary);
+        const TypeIndex& types = context.cache().types(scope.dictionary);
         NameFindings findings;
         for_each_type_reference(*scope.dictionary, [&](const TypeReference& ref) {
             std::string_view culprit;
@@ -94,7 +95,7 @@ void check_nonstandard_type_name(const EsiDocument& document, RuleContext& conte
     for (const auto& scope : dictionary_scopes(document)) {
         // A Dictionary may define a DataType of any name, INT8 included (Beckhoff's SoE
         // dictionaries do); only names nothing defines are faults.
-        const TypeIndex types(*scope.dictionary);
+        const TypeIndex& types = context.cache().types(scope.dictionary);
         NameFindings findings;
         for_each_type_reference(*scope.dictionary, [&](const TypeReference& ref) {
             std::string_view culprit;
@@ -109,7 +110,7 @@ void check_nonstandard_type_name(const EsiDocument& document, RuleContext& conte
 void check_type_cycle(const EsiDocument& document, RuleContext& context) {
     const auto before = [](const SourcePos& a, const SourcePos& b) { return a.line < b.line || (a.line == b.line && a.column < b.column); };
     for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex types(*scope.dictionary);
+        const TypeIndex& types = context.cache().types(scope.dictionary);
         std::unordered_set<const DataType*> seen;
         for (const auto& type : scope.dictionary->data_types) {
             if (types.find(type.name) != &type || !types.in_base_type_cycle(type) || seen.count(&type)) continue;
@@ -181,7 +182,7 @@ void check_subitem_layout(const EsiDocument& document, RuleContext& context) {
 
 void check_array_size(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex types(*scope.dictionary);
+        const TypeIndex& types = context.cache().types(scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
             if (type.array_info.empty()) continue;
             const ArrayInfo& first = type.array_info.front();
@@ -211,7 +212,7 @@ void check_array_size(const EsiDocument& document, RuleContext& context) {
 
 void check_bitsize(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex types(*scope.dictionary);
+        const TypeIndex& types = context.cache().types(scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
             // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
             if (type.bit_size > 0 && types.find(type.name) == &type) {
@@ -240,7 +241,7 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
 
 void check_duplicate_datatype(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex types(*scope.dictionary);
+        const TypeIndex& types = context.cache().types(scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
             const DataType* first = types.find(type.name);
             if (!first || first == &type) continue;

@@ -1,5 +1,6 @@
 #include "check/od_type_index.hpp"
 
+#include <unordered_map>
 #include <vector>
 
 #include "esi/data_types.hpp"
@@ -11,26 +12,30 @@ namespace {
 // Real BaseType chains are one or two steps long (an enum on USINT); a bound keeps hostile
 // files with long chains linear.
 constexpr int max_base_type_steps = 32;
+
+// The basic type a name (not a DataType) stands for: a basic type or STRING(n). Basic names
+// are looked up before parsing the name, which costs a TypeName with two strings: the type
+// rules ask this of every sub-item, object and PDO entry.
+const BasicType* basic_or_string(std::string_view name) {
+    if (const BasicType* basic = find_basic_type(name)) return basic;
+    const TypeName parsed = parse_type_name(name);
+    return parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string ? parsed.basic : nullptr;
+}
 }  // namespace
 
-TypeIndex::TypeIndex(const Dictionary& dictionary) { add(dictionary); }
+TypeIndex::TypeIndex(const Dictionary& dictionary) : TypeIndex(&dictionary) {}
 
-TypeIndex::TypeIndex(const Dictionary* dictionary) {
-    if (dictionary) add(*dictionary);
-}
-
-void TypeIndex::add(const Dictionary& dictionary) {
-    types_.reserve(dictionary.data_types.size());
-    for (const auto& t : dictionary.data_types) types_.emplace(std::string_view(t.name), &t);
-    find_cycles();
-}
+TypeIndex::TypeIndex(const Dictionary* dictionary) : data_types_(dictionary) { find_cycles(); }
 
 void TypeIndex::find_cycles() {
     // Every DataType has at most one BaseType, so the types form chains that either end or run
     // into one loop. One walk per chain, marking what it passed, finds every loop in linear time.
     enum class State { unvisited, on_path, done };
-    std::unordered_map<const DataType*, State> state;
-    state.reserve(types_.size());
+    const Dictionary* dictionary = data_types_.dictionary();
+    if (!dictionary) return;
+    // States by position in DataTypes (every DataType pointer here points into it).
+    std::vector<State> states(dictionary->data_types.size(), State::unvisited);
+    const auto state = [&](const DataType* t) -> State& { return states[static_cast<std::size_t>(t - dictionary->data_types.data())]; };
     const auto next = [&](const DataType* t) -> const DataType* {
         if (!t->base_type) return nullptr;
         const std::string_view base = trim(*t->base_type);
@@ -40,16 +45,17 @@ void TypeIndex::find_cycles() {
         return n;
     };
     std::vector<const DataType*> path;
-    for (const auto& [name, start] : types_) {
-        if (state[start] != State::unvisited) continue;
+    for (const auto& type : dictionary->data_types) {
+        const DataType* start = &type;
+        if (data_types_.find(type.name) != start || state(start) != State::unvisited) continue;  // only the first of a name is indexed
         path.clear();
         const DataType* t = start;
-        while (t && state[t] == State::unvisited) {
-            state[t] = State::on_path;
+        while (t && state(t) == State::unvisited) {
+            state(t) = State::on_path;
             path.push_back(t);
             t = next(t);
         }
-        if (t && state[t] == State::on_path) {
+        if (t && state(t) == State::on_path) {
             // The loop is the part of the path from t on.
             bool in_loop = false;
             for (const DataType* p : path) {
@@ -57,7 +63,7 @@ void TypeIndex::find_cycles() {
                 if (in_loop) in_cycle_.insert(p);
             }
         }
-        for (const DataType* p : path) state[p] = State::done;
+        for (const DataType* p : path) state(p) = State::done;
     }
 }
 
@@ -65,31 +71,21 @@ const BasicType* TypeIndex::basic(std::string_view name) const {
     name = trim(name);
     for (int step = 0; step < max_base_type_steps; ++step) {
         const DataType* t = find(name);
-        if (!t) {
-            const TypeName parsed = parse_type_name(name);
-            return parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string ? parsed.basic : nullptr;
-        }
+        if (!t) return basic_or_string(name);
         if (!t->array_info.empty() || !t->sub_items.empty()) return nullptr;
         const std::string_view base = t->base_type ? trim(*t->base_type) : std::string_view{};
-        if (base.empty() || base == name) {
-            // A DataType named like a basic type ("UINT" with its BitSize) is that type.
-            const TypeName parsed = parse_type_name(name);
-            return parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string ? parsed.basic : nullptr;
-        }
+        if (base.empty() || base == name) return basic_or_string(name);  // a DataType named like a basic type ("UINT" with its BitSize) is that type
         name = base;
     }
     return nullptr;  // a BaseType loop, or a chain too long to be real
 }
 
-const DataType* TypeIndex::find(std::string_view name) const {
-    const auto it = types_.find(trim(name));
-    return it == types_.end() ? nullptr : it->second;
-}
+const DataType* TypeIndex::find(std::string_view name) const { return data_types_.find(trim(name)); }
 
 TypeNameStatus TypeIndex::status(std::string_view name, std::string_view* culprit) const {
     name = trim(name);
     for (int depth = 0; depth < 8; ++depth) {
-        if (find(name)) return TypeNameStatus::resolved;
+        if (find_basic_type(name) || find(name)) return TypeNameStatus::resolved;
         const TypeName parsed = parse_type_name(name);
         if (parsed.kind == TypeName::Kind::basic || parsed.kind == TypeName::Kind::string) return TypeNameStatus::resolved;
         if (parsed.kind == TypeName::Kind::array) {
@@ -109,6 +105,10 @@ std::optional<std::uint64_t> TypeIndex::bit_size(std::string_view name) const {
     name = trim(name);
     if (const DataType* t = find(name)) {
         if (t->bit_size > 0) return t->bit_size;
+        return std::nullopt;
+    }
+    if (const BasicType* basic = find_basic_type(name)) {  // implied_bit_size's answer, without parsing the name twice
+        if (basic->bit_size > 0) return basic->bit_size;
         return std::nullopt;
     }
     const TypeName parsed = parse_type_name(name);

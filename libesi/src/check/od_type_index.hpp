@@ -6,11 +6,11 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
+#include "esi/model/object_layout.hpp"
 
 namespace esi::rules {
 
@@ -38,12 +38,13 @@ public:
     [[nodiscard]] const BasicType* basic(std::string_view name) const;
     // Whether following BaseType from this DataType comes back to it.
     [[nodiscard]] bool in_base_type_cycle(const DataType& type) const;
+    // The DataTypes by exact name, for resolve_type and layout_of.
+    [[nodiscard]] const DataTypeIndex& data_types() const { return data_types_; }
 
 private:
-    void add(const Dictionary& dictionary);
     void find_cycles();
 
-    std::unordered_map<std::string_view, const DataType*> types_;
+    DataTypeIndex data_types_;
     std::unordered_set<const DataType*> in_cycle_;
 };
 

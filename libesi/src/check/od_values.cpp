@@ -18,15 +18,33 @@ Number from_pattern(std::uint64_t pattern, const ValueFormat& format) {
 
 }  // namespace
 
-std::optional<Number> number_from_data(const HexData& data, const ValueFormat& format) {
-    const auto bytes = data.bytes();
-    if (!bytes || bytes->empty() || bytes->size() > 8) return std::nullopt;
+std::optional<std::uint64_t> little_endian_pattern(const HexData& data) {
+    const std::string& text = data.text;
+    const std::size_t byte_count = text.size() / 2;
+    if (text.empty() || text.size() % 2 != 0 || byte_count > 8) return std::nullopt;
+    const auto digit = [](char c) -> int {
+        if (c >= '0' && c <= '9') return c - '0';
+        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+        return -1;
+    };
     std::uint64_t pattern = 0;
-    for (std::size_t i = 0; i < bytes->size(); ++i) pattern |= std::uint64_t{(*bytes)[i]} << (8 * i);
+    for (std::size_t i = 0; i < byte_count; ++i) {
+        const int high = digit(text[2 * i]);
+        const int low = digit(text[2 * i + 1]);
+        if (high < 0 || low < 0) return std::nullopt;  // not hexBinary (HexData::valid)
+        pattern |= std::uint64_t(high * 16 + low) << (8 * i);
+    }
+    return pattern;
+}
+
+std::optional<Number> number_from_data(const HexData& data, const ValueFormat& format) {
+    const std::optional<std::uint64_t> pattern = little_endian_pattern(data);
+    if (!pattern) return std::nullopt;
     ValueFormat effective = format;
     // Data shorter than the entry is zero-extended; the sign bit is the entry's, not the data's.
-    if (effective.bit_size == 0 || effective.bit_size > 64) effective.bit_size = 8 * bytes->size();
-    return from_pattern(pattern, effective);
+    if (effective.bit_size == 0 || effective.bit_size > 64) effective.bit_size = 8 * data.byte_length();
+    return from_pattern(*pattern, effective);
 }
 
 Number normalized(const Number& value, const ValueFormat& format) {

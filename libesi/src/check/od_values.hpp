@@ -20,6 +20,12 @@ struct ValueFormat {
     bool is_signed = false;
 };
 
+// The bit pattern a little-endian byte string holds (ETG.2000 DefaultData is in SDO order).
+// nullopt when the data is not valid hex, empty or longer than 8 bytes. Read in place: rules
+// read every default, minimum and maximum of the dictionaries, and HexData::bytes() allocated
+// a vector for each.
+[[nodiscard]] std::optional<std::uint64_t> little_endian_pattern(const HexData& data);
+
 // The integer a little-endian byte string holds, sign-extended for signed formats. nullopt when
 // the data is not valid hex, empty or longer than 8 bytes.
 [[nodiscard]] std::optional<Number> number_from_data(const HexData& data, const ValueFormat& format);

@@ -13,6 +13,7 @@
 #include "check/pdo_checks.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
+#include "check/rule_cache.hpp"
 
 namespace esi::rules::pdo {
 
@@ -87,7 +88,7 @@ void check_assign_default(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
         // Modular devices add module PDOs to the assignment as modules are plugged in.
         if (!scope.device || scope.device->slots || !scope.dictionary) continue;
-        const DictionaryIndex dictionary(scope.dictionary);
+        const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);
         for (std::uint32_t index = first_assignment_object; index <= last_assignment_object; ++index) {
             const Object* object = dictionary.object(index);
             if (!object) continue;
@@ -116,7 +117,7 @@ void check_assign_default(const EsiDocument& document, RuleContext& context) {
 void check_mapping_default(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
         if (!scope.device || !scope.dictionary) continue;
-        const DictionaryIndex dictionary(scope.dictionary);
+        const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);
         scope.for_each_pdo([&](const Pdo& pdo) {
             if (pdo.index_invalid || depends_on_slot(pdo)) return;
             const Object* object = dictionary.object(pdo.index);

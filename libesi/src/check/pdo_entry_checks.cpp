@@ -6,6 +6,7 @@
 #include "check/pdo_checks.hpp"
 #include "check/pdo_entry_type.hpp"
 #include "check/pdo_scope.hpp"
+#include "check/rule_cache.hpp"
 #include "esi/text_distance.hpp"
 
 namespace esi::rules::pdo {
@@ -20,11 +21,11 @@ void for_each_entry(const EsiDocument& document, F&& f) {
         });
 }
 
-// The same, with the types of the owner's Dictionary at hand.
+// The same, with what DataTypes mean under the owner's Dictionary at hand.
 template <class F>
-void for_each_typed_entry(const EsiDocument& document, F&& f) {
+void for_each_typed_entry(const EsiDocument& document, RuleContext& context, F&& f) {
     for (const auto& scope : pdo_scopes(document)) {
-        const TypeIndex types(scope.dictionary);
+        EntryTypes& types = context.cache().entry_types(scope.dictionary);
         for (const auto* list : {scope.rx_pdos, scope.tx_pdos})
             for (const auto& pdo : *list)
                 for (const auto& entry : pdo.entries) f(scope, types, entry);
@@ -43,8 +44,8 @@ std::vector<std::string_view> basic_type_names() {
 
 void check_entry_type_unknown(const EsiDocument& document, RuleContext& context) {
     static const std::vector<std::string_view> names = basic_type_names();
-    for_each_typed_entry(document, [&](const PdoScope& scope, const TypeIndex& types, const PdoEntry& entry) {
-        const EntryType type = entry_type(types, entry);
+    for_each_typed_entry(document, context, [&](const PdoScope& scope, EntryTypes& types, const PdoEntry& entry) {
+        const EntryType& type = types.of(entry);
         if (!type.present) {
             // Padding needs no DataType; a mapped value does, and an empty element says nothing.
             if (entry.data_type && !entry.is_padding())
@@ -70,10 +71,10 @@ void check_entry_type_unknown(const EsiDocument& document, RuleContext& context)
 }
 
 void check_entry_bitlen_type(const EsiDocument& document, RuleContext& context) {
-    for_each_typed_entry(document, [&](const PdoScope&, const TypeIndex& types, const PdoEntry& entry) {
+    for_each_typed_entry(document, context, [&](const PdoScope&, EntryTypes& types, const PdoEntry& entry) {
         // BitLen 0 is a missing or unreadable BitLen (the reader reports it) or an empty slot.
         if (entry.is_padding() || entry.bit_len == 0 || entry.bit_len_pos.line == 0) return;
-        const EntryType type = entry_type(types, entry);
+        const EntryType& type = types.of(entry);
         if (!type.known || type.bit_size == 0 || type.bit_size == entry.bit_len) return;
         context.report(entry.bit_len_pos, entry_label(entry) + " has BitLen " + std::to_string(entry.bit_len) + " but " +
                                               *entry.data_type + " is " + bits_text(type.bit_size));

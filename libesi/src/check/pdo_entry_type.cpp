@@ -32,4 +32,12 @@ EntryType entry_type(const TypeIndex& types, const PdoEntry& entry) {
     return out;
 }
 
+const EntryType& EntryTypes::of(const PdoEntry& entry) {
+    if (!entry.data_type) return absent_;
+    const std::string_view text = trim(*entry.data_type);
+    auto it = by_text_.find(text);
+    if (it == by_text_.end()) it = by_text_.emplace(text, entry_type(types_, entry)).first;
+    return it->second;
+}
+
 }  // namespace esi::rules

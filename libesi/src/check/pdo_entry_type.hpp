@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string_view>
+#include <unordered_map>
 
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
@@ -22,5 +23,20 @@ struct EntryType {
 };
 
 [[nodiscard]] EntryType entry_type(const TypeIndex& types, const PdoEntry& entry);
+
+// entry_type() remembered per DataType text: four pdo rules ask it of every entry, and a
+// catalogue writes a handful of type names thousands of times (each answer took several
+// lookups and type-name parses). Used on one thread; the model must outlive it unchanged.
+class EntryTypes {
+public:
+    explicit EntryTypes(const TypeIndex& types) : types_(types) {}
+    [[nodiscard]] const TypeIndex& types() const { return types_; }
+    [[nodiscard]] const EntryType& of(const PdoEntry& entry);
+
+private:
+    const TypeIndex& types_;
+    EntryType absent_;  // no DataType element
+    std::unordered_map<std::string_view, EntryType> by_text_;
+};
 
 }  // namespace esi::rules

@@ -8,6 +8,7 @@
 #include "check/pdo_entry_type.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
+#include "check/rule_cache.hpp"
 
 namespace esi::rules::pdo {
 
@@ -37,21 +38,23 @@ struct MappedEntry {
     const PdoScope& scope;
     const DictionaryIndex& dictionary;
     const TypeIndex& types;
+    EntryTypes& entry_types;
     const Pdo& pdo;
     const PdoEntry& entry;
 };
 
 template <class F>
-void for_each_mapped_entry(const EsiDocument& document, bool complete_dictionaries_only, F&& f) {
+void for_each_mapped_entry(const EsiDocument& document, RuleContext& context, bool complete_dictionaries_only, F&& f) {
     for (const auto& scope : pdo_scopes(document)) {
         if (!scope.dictionary || scope.dictionary->objects.empty()) continue;
         if (complete_dictionaries_only && !scope.dictionary_is_complete) continue;
-        const DictionaryIndex dictionary(scope.dictionary);
-        const TypeIndex types(scope.dictionary);
+        const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);
+        const TypeIndex& types = context.cache().types(scope.dictionary);
+        EntryTypes& entry_types = context.cache().entry_types(scope.dictionary);
         scope.for_each_pdo([&](const Pdo& pdo) {
             if (is_oversampling(pdo)) return;
             for (const auto& entry : pdo.entries)
-                if (addresses_an_object(entry)) f(MappedEntry{scope, dictionary, types, pdo, entry});
+                if (addresses_an_object(entry)) f(MappedEntry{scope, dictionary, types, entry_types, pdo, entry});
         });
     }
 }
@@ -88,7 +91,7 @@ std::string target_label(const Object& object, const ObjectEntry& target) {
 }  // namespace
 
 void check_entry_object_missing(const EsiDocument& document, RuleContext& context) {
-    for_each_mapped_entry(document, true, [&](const MappedEntry& m) {
+    for_each_mapped_entry(document, context, true, [&](const MappedEntry& m) {
         const DictionaryIndex& dictionary = m.dictionary;
         const PdoEntry& entry = m.entry;
         if (is_profile_infrastructure(entry.index)) return;
@@ -111,12 +114,12 @@ void check_entry_object_missing(const EsiDocument& document, RuleContext& contex
 }
 
 void check_entry_object_type(const EsiDocument& document, RuleContext& context) {
-    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+    for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
         const DictionaryIndex& dictionary = m.dictionary;
         const PdoEntry& entry = m.entry;
         const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
         if (!target || !target->basic) return;
-        const EntryType type = entry_type(m.types, entry);
+        const EntryType& type = m.entry_types.of(entry);
         if (!type.known || !type.basic) return;
         // A size difference is pdo-entry-object-bitlen's finding, which names both types.
         if (target->bit_size != 0 && entry.bit_len != target->bit_size) return;
@@ -133,14 +136,14 @@ void check_entry_object_type(const EsiDocument& document, RuleContext& context) 
 }
 
 void check_entry_object_bitlen(const EsiDocument& document, RuleContext& context) {
-    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+    for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
         const DictionaryIndex& dictionary = m.dictionary;
         const PdoEntry& entry = m.entry;
         if (entry.bit_len == 0 || entry.bit_len_pos.line == 0) return;
         const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
         if (!target || target->bit_size == 0 || target->bit_size == entry.bit_len) return;
         // When BitLen already disagrees with the entry's own DataType, pdo-entry-bitlen-type reports it.
-        const EntryType type = entry_type(m.types, entry);
+        const EntryType& type = m.entry_types.of(entry);
         if (type.known && type.bit_size != 0 && type.bit_size != entry.bit_len) return;
         const Object* object = dictionary.object(entry.index);
         std::string written = entry.data_type && !entry.data_type->empty() ? " (" + *entry.data_type + ")" : "";
@@ -151,7 +154,7 @@ void check_entry_object_bitlen(const EsiDocument& document, RuleContext& context
 }
 
 void check_entry_not_mappable(const EsiDocument& document, RuleContext& context) {
-    for_each_mapped_entry(document, false, [&](const MappedEntry& m) {
+    for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
         const DictionaryIndex& dictionary = m.dictionary;
         const Pdo& pdo = m.pdo;
         const PdoEntry& entry = m.entry;

@@ -1,5 +1,7 @@
 #include "check/queries.hpp"
 
+#include "check/od_values.hpp"
+
 namespace esi::rules {
 
 std::vector<const Device*> all_devices(const EsiDocument& document) {
@@ -40,7 +42,7 @@ std::string_view to_string(SmRole role) {
     return "unknown";
 }
 
-DictionaryIndex::DictionaryIndex(const Dictionary* dictionary) : dictionary_(dictionary) {
+DictionaryIndex::DictionaryIndex(const Dictionary* dictionary, const DataTypeIndex& types) : dictionary_(dictionary), types_(types) {
     if (!dictionary) return;
     objects_.reserve(dictionary->objects.size());
     for (const auto& o : dictionary->objects) objects_.emplace(o.index, &o);
@@ -53,10 +55,13 @@ const Object* DictionaryIndex::object(std::uint32_t index) const {
 
 const ObjectLayout* DictionaryIndex::layout(std::uint32_t index) const {
     const Object* o = object(index);
-    if (!o) return nullptr;
-    auto it = layouts_.find(index);
-    if (it == layouts_.end()) it = layouts_.emplace(index, layout_of(dictionary_, *o)).first;
-    return &it->second;
+    return o ? &layout(*o) : nullptr;
+}
+
+const ObjectLayout& DictionaryIndex::layout(const Object& object) const {
+    auto it = layouts_.find(&object);
+    if (it == layouts_.end()) it = layouts_.emplace(&object, layout_of(types_, object)).first;
+    return it->second;  // unordered_map nodes do not move: the reference stays valid
 }
 
 const ObjectEntry* DictionaryIndex::entry(std::uint32_t index, std::uint32_t subindex) const {
@@ -68,11 +73,7 @@ std::optional<std::uint64_t> default_integer(const ObjectEntry& entry) {
     if (!entry.info) return std::nullopt;
     if (entry.info->default_value) return entry.info->default_value->bits();
     if (!entry.info->default_data) return std::nullopt;
-    const auto bytes = entry.info->default_data->bytes();
-    if (!bytes || bytes->empty() || bytes->size() > 8) return std::nullopt;
-    std::uint64_t value = 0;
-    for (std::size_t i = bytes->size(); i-- > 0;) value = (value << 8) | (*bytes)[i];
-    return value;
+    return little_endian_pattern(*entry.info->default_data);
 }
 
 SourcePos default_pos(const ObjectEntry& entry) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 
 namespace esi {
 
@@ -35,6 +36,20 @@ const Rule* find_rule(std::string_view id) {
     const auto rules = all_rules();
     const auto it = std::lower_bound(rules.begin(), rules.end(), id, [](const Rule& r, std::string_view key) { return r.id < key; });
     return it != rules.end() && it->id == id ? &*it : nullptr;
+}
+
+RuleContext::RuleContext(const EsiDocument& document, const Rule& rule, Severity severity, const EffectiveConfig& config,
+                         Diagnostics& sink, rules::RuleCache* cache)
+    : document_(document), rule_(rule), severity_(severity), config_(config), sink_(sink), cache_(cache) {}
+
+RuleContext::~RuleContext() = default;
+
+rules::RuleCache& RuleContext::cache() {
+    if (!cache_) {
+        own_cache_ = std::make_unique<rules::RuleCache>();
+        cache_ = own_cache_.get();
+    }
+    return *cache_;
 }
 
 void RuleContext::report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes) {

@@ -8,6 +8,7 @@
 
 #include "check/areas.hpp"
 #include "check/queries.hpp"
+#include "check/rule_cache.hpp"
 #include "esi/number.hpp"
 #include "esi/text_distance.hpp"
 
@@ -226,7 +227,7 @@ void check_1018(const EsiDocument& document, RuleContext& context) {
             if (!dictionary) continue;
             const Object* identity = dictionary->find_object(0x1018);
             if (!identity) continue;
-            const ObjectLayout layout = layout_of(dictionary, *identity);
+            const ObjectLayout& layout = context.cache().objects(dictionary).layout(*identity);
             struct Expected {
                 std::uint32_t subindex;
                 std::optional<std::uint32_t> value;

@@ -4,6 +4,7 @@
 
 #include "check/areas.hpp"
 #include "check/queries.hpp"
+#include "check/rule_cache.hpp"
 #include "esi/number.hpp"
 #include "esi/text_distance.hpp"
 
@@ -151,24 +152,18 @@ void check_data_hex(const EsiDocument& document, RuleContext& context) {
 // CoE InitCmds whose target can be looked up: a dictionary exists and the index is absolute
 // (IndexDependOnSlot adds a slot offset the description alone does not fix).
 template <class F>
-void for_each_coe_target(const EsiDocument& document, F&& f) {
-    const Dictionary* indexed = nullptr;
-    std::optional<DictionaryIndex> index;
+void for_each_coe_target(const EsiDocument& document, RuleContext& context, F&& f) {
     for_each_init_cmd(document, [&](const InitCmdSite& site) {
         if (site.protocol != Protocol::coe || !site.dictionary || !site.cmd->index) return;
         if ((site.cmd->index_depend_on_slot && *site.cmd->index_depend_on_slot) ||
             (site.cmd->index_depend_on_slot_group && *site.cmd->index_depend_on_slot_group))
             return;
-        if (indexed != site.dictionary) {  // InitCmds of one device come together: build once per device
-            index.emplace(site.dictionary);
-            indexed = site.dictionary;
-        }
-        f(site, *index);
+        f(site, context.cache().objects(site.dictionary));
     });
 }
 
 void check_target_missing(const EsiDocument& document, RuleContext& context) {
-    for_each_coe_target(document, [&](const InitCmdSite& site, const DictionaryIndex& index) {
+    for_each_coe_target(document, context, [&](const InitCmdSite& site, const DictionaryIndex& index) {
         const std::uint32_t object_index = *site.cmd->index;
         const Object* object = index.object(object_index);
         if (!object) {
@@ -208,7 +203,7 @@ bool fixed_size(const ObjectEntry& entry) {
 }
 
 void check_data_length(const EsiDocument& document, RuleContext& context) {
-    for_each_coe_target(document, [&](const InitCmdSite& site, const DictionaryIndex& index) {
+    for_each_coe_target(document, context, [&](const InitCmdSite& site, const DictionaryIndex& index) {
         const InitCmd& cmd = *site.cmd;
         if (!cmd.has_data || !cmd.data.valid()) return;
         const Object* object = index.object(*cmd.index);

@@ -10,6 +10,7 @@
 
 #include "check/areas.hpp"
 #include "check/queries.hpp"
+#include "check/rule_cache.hpp"
 #include "check/sm_roles.hpp"
 #include "esi/number.hpp"
 
@@ -289,7 +290,7 @@ void check_1c00(const EsiDocument& document, RuleContext& context) {
         if (!dictionary) continue;
         const Object* object = dictionary->find_object(0x1C00);
         if (!object) continue;
-        const ObjectLayout layout = layout_of(dictionary, *object);
+        const ObjectLayout& layout = context.cache().objects(dictionary).layout(*object);
         for (const auto& entry : layout.entries) {
             if (entry.subindex == 0 || entry.subindex > 32) continue;
             const std::optional<std::uint64_t> value = default_integer(entry);

@@ -124,6 +124,19 @@ DecodedText decode_utf16(std::string_view bytes, bool little_endian) {
     return out;
 }
 
+// The end of the run of ASCII bytes (high bit clear) starting at `from`.
+std::size_t ascii_run_end(std::string_view bytes, std::size_t from) {
+    std::size_t i = from;
+    while (i + 8 <= bytes.size()) {
+        std::uint64_t chunk = 0;
+        std::memcpy(&chunk, bytes.data() + i, 8);
+        if (chunk & 0x8080808080808080ull) break;
+        i += 8;
+    }
+    while (i < bytes.size() && static_cast<unsigned char>(bytes[i]) < 0x80) ++i;
+    return i;
+}
+
 DecodedText decode_8bit(std::string_view bytes, bool windows1252) {
     DecodedText out;
     out.encoding = windows1252 ? SourceEncoding::windows1252 : SourceEncoding::latin1;
@@ -131,9 +144,9 @@ DecodedText decode_8bit(std::string_view bytes, bool windows1252) {
     for (std::size_t i = 0; i < bytes.size(); ++i) {
         const auto c = static_cast<unsigned char>(bytes[i]);
         if (c < 0x80) {
-            // Copy the whole ASCII run at once.
-            std::size_t run = i + 1;
-            while (run < bytes.size() && static_cast<unsigned char>(bytes[run]) < 0x80) ++run;
+            // Copy the whole ASCII run at once; the run is found eight bytes at a time (vendor
+            // files are almost all ASCII, and a byte loop cost four instructions a byte).
+            std::size_t run = ascii_run_end(bytes, i + 1);
             out.utf8.append(bytes.substr(i, run - i));
             i = run - 1;
         } else if (windows1252 && c < 0xA0) {
@@ -158,7 +171,16 @@ bool is_valid_utf8(std::string_view text, std::size_t* first_bad) {
     const std::size_t n = text.size();
     std::size_t i = 0;
     while (i < n) {
-        // Fast path over ASCII, eight bytes at a time.
+        // Fast path over ASCII, sixteen bytes (two words tested at once) at a time: every UTF-8
+        // file is validated whole before parsing, and the loop overhead was half the cost.
+        while (i + 16 <= n) {
+            std::uint64_t first = 0;
+            std::uint64_t second = 0;
+            std::memcpy(&first, p + i, 8);
+            std::memcpy(&second, p + i + 8, 8);
+            if ((first | second) & 0x8080808080808080ull) break;
+            i += 16;
+        }
         while (i + 8 <= n) {
             std::uint64_t chunk = 0;
             std::memcpy(&chunk, p + i, 8);

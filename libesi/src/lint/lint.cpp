@@ -1,11 +1,12 @@
 #include "esi/lint/lint.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <map>
 #include <mutex>
 #include <thread>
 
+#include "check/rule_cache.hpp"
+#include "lint/file_queue.hpp"
 #include "esi/lint/suppression.hpp"
 #include "esi/lint/xsd.hpp"
 
@@ -23,11 +24,12 @@ bool LintReport::any_unreadable() const {
 
 Diagnostics run_rules(const EsiDocument& document, const EffectiveConfig& config) {
     Diagnostics out;
+    rules::RuleCache cache;  // the rules share Dictionary indexes and object layouts
     for (const Rule& rule : all_rules()) {
         if (!rule.check) continue;
         const std::optional<Severity> severity = config.severity_of(rule.id, rule.default_severity);
         if (!severity) continue;
-        RuleContext context(document, rule, *severity, config, out);
+        RuleContext context(document, rule, *severity, config, out, &cache);
         rule.check(document, context);
     }
     return out;
@@ -164,16 +166,25 @@ LintReport lint_paths(const std::vector<std::filesystem::path>& inputs, const Li
     std::vector<FileReport> results(files.size());
     unsigned jobs = options.jobs ? options.jobs : std::max(1u, std::thread::hardware_concurrency());
     jobs = static_cast<unsigned>(std::min<std::size_t>(jobs, std::max<std::size_t>(files.size(), 1)));
-    std::atomic<std::size_t> next{0};
-    auto worker = [&] {
-        for (std::size_t i = next++; i < files.size(); i = next++)
-            results[i] = lint_read_result(read_esi_file(files[i]), files[i].string(), configs[i], schemas.get());
+    std::vector<std::uintmax_t> sizes(files.size());
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        std::error_code ec;
+        const std::uintmax_t size = std::filesystem::file_size(files[i], ec);
+        sizes[i] = ec ? 0 : size;
+    }
+    const std::uintmax_t budget = FileQueue::default_budget(sizes);
+    FileQueue queue(std::move(sizes), budget);
+    auto worker = [&](unsigned number) {
+        while (const std::optional<std::size_t> i = queue.take(number)) {
+            results[*i] = lint_read_result(read_esi_file(files[*i]), files[*i].string(), configs[*i], schemas.get());
+            queue.done(*i);
+        }
     };
     if (jobs <= 1) {
-        worker();
+        worker(0);
     } else {
         std::vector<std::thread> threads;
-        for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker);
+        for (unsigned t = 0; t < jobs; ++t) threads.emplace_back(worker, t);
         for (auto& t : threads) t.join();
     }
     for (auto& r : results) report.files.push_back(std::move(r));

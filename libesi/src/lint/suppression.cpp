@@ -1,5 +1,6 @@
 #include "esi/lint/suppression.hpp"
 
+#include <cstring>
 #include <limits>
 
 #include "esi/check/registry.hpp"
@@ -36,8 +37,21 @@ Suppressions find_suppressions(const SourceText& source, Diagnostics& diagnostic
     Suppressions out;
     const std::string& text = source.text();
     constexpr std::string_view marker = "esi-lint:";
+    // The marker is found by its ':', which ESI files hardly use outside namespace prefixes and
+    // URLs, with memchr; std::string::find stopped at every 'e' of the file instead, about 3
+    // instructions a byte over the whole text of every file linted.
+    const auto find_marker = [&](std::size_t from) -> std::size_t {
+        for (std::size_t colon = from + marker.size() - 1; colon < text.size(); ++colon) {
+            const void* hit = std::memchr(text.data() + colon, ':', text.size() - colon);
+            if (!hit) break;
+            colon = static_cast<std::size_t>(static_cast<const char*>(hit) - text.data());
+            const std::size_t start = colon + 1 - marker.size();
+            if (start >= from && std::string_view(text).substr(start, marker.size()) == marker) return start;
+        }
+        return std::string::npos;
+    };
     std::size_t at = 0;
-    while ((at = text.find(marker, at)) != std::string::npos) {
+    while ((at = find_marker(at)) != std::string::npos) {
         // Only inside a comment: the nearest "<!--" before must be after the nearest "-->".
         const auto open = text.rfind("<!--", at);
         const auto close_before = text.rfind("-->", at);

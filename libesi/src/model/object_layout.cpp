@@ -1,6 +1,6 @@
 #include "esi/model/object_layout.hpp"
 
-#include <cstdio>
+#include <algorithm>
 
 namespace esi {
 
@@ -17,11 +17,26 @@ std::string_view to_string(ObjectCode code) {
     return "VAR";
 }
 
-ResolvedType resolve_type(const Dictionary* dictionary, std::string_view type_name) {
+namespace {
+
+// How a type name is looked up: by scanning the Dictionary's DataTypes (one-off questions) or
+// through a DataTypeIndex built once (the many questions of a lint run).
+struct ScannedTypes {
+    const Dictionary* dictionary;
+    [[nodiscard]] const DataType* find(std::string_view name) const { return dictionary ? dictionary->find_data_type(name) : nullptr; }
+};
+struct IndexedTypes {
+    const DataTypeIndex& index;
+    [[nodiscard]] const DataType* find(std::string_view name) const { return index.find(name); }
+};
+
+template <class Types>
+ResolvedType resolve(const Types& types, std::string_view type_name) {
     ResolvedType out;
-    std::string current(trim(type_name));
+    // Views into the caller's name and the Dictionary's BaseType strings, which outlive the walk.
+    std::string_view current = trim(type_name);
     for (int depth = 0; depth < max_type_depth; ++depth) {
-        const DataType* definition = dictionary ? dictionary->find_data_type(current) : nullptr;
+        const DataType* definition = types.find(current);
         if (definition) {
             out.known = true;
             if (!out.definition) {
@@ -41,7 +56,7 @@ ResolvedType resolve_type(const Dictionary* dictionary, std::string_view type_na
                 if (out.is_array && depth == 0) {
                     // The base type of an array definition is its element type; the array itself ends here.
                     out.basic = nullptr;
-                    const ResolvedType element = resolve_type(dictionary, *definition->base_type);
+                    const ResolvedType element = resolve(types, *definition->base_type);
                     if (element.cycle) out.cycle = true;
                     return out;
                 }
@@ -49,6 +64,10 @@ ResolvedType resolve_type(const Dictionary* dictionary, std::string_view type_na
                 continue;
             }
             // A DataType named like a basic type (Beckhoff lists "UINT" with its BitSize).
+            if (const BasicType* basic = find_basic_type(current)) {  // parse_type_name's answer, without its copies
+                out.basic = basic;
+                return out;
+            }
             const TypeName parsed = parse_type_name(current);
             if (parsed.kind == TypeName::Kind::basic) out.basic = parsed.basic;
             else if (parsed.kind == TypeName::Kind::string) out.basic = parsed.basic;
@@ -58,6 +77,12 @@ ResolvedType resolve_type(const Dictionary* dictionary, std::string_view type_na
                 out.array_elements = parsed.element_count();
                 out.element_type = parsed.element;
             }
+            return out;
+        }
+        if (const BasicType* basic = find_basic_type(current)) {  // parse_type_name's answer, without its copies
+            out.known = true;
+            out.basic = basic;
+            if (!out.definition) out.bit_size = basic->bit_size;
             return out;
         }
         const TypeName parsed = parse_type_name(current);
@@ -85,6 +110,31 @@ ResolvedType resolve_type(const Dictionary* dictionary, std::string_view type_na
     return out;
 }
 
+}  // namespace
+
+DataTypeIndex::DataTypeIndex(const Dictionary* dictionary) : dictionary_(dictionary), basic_named_(basic_types().size(), nullptr) {
+    if (!dictionary) return;
+    by_name_.reserve(dictionary->data_types.size());
+    for (const auto& t : dictionary->data_types) {
+        // The first of a name wins, in both tables.
+        if (const BasicType* basic = find_basic_type(t.name)) {
+            const DataType*& slot = basic_named_[static_cast<std::size_t>(basic - basic_types().data())];
+            if (!slot) slot = &t;
+        } else {
+            by_name_.emplace(std::string_view(t.name), &t);
+        }
+    }
+}
+
+const DataType* DataTypeIndex::find(std::string_view name) const {
+    if (const BasicType* basic = find_basic_type(name)) return basic_named_[static_cast<std::size_t>(basic - basic_types().data())];
+    const auto it = by_name_.find(name);
+    return it == by_name_.end() ? nullptr : it->second;
+}
+
+ResolvedType resolve_type(const Dictionary* dictionary, std::string_view type_name) { return resolve(ScannedTypes{dictionary}, type_name); }
+ResolvedType resolve_type(const DataTypeIndex& types, std::string_view type_name) { return resolve(IndexedTypes{types}, type_name); }
+
 const ObjectEntry* ObjectLayout::entry(std::uint32_t subindex) const {
     for (const auto& e : entries)
         if (e.subindex == subindex) return &e;
@@ -93,25 +143,29 @@ const ObjectEntry* ObjectLayout::entry(std::uint32_t subindex) const {
 
 namespace {
 
+// "SubIndex 001" (three digits at least), the name of an array element. Formatted by hand:
+// snprintf cost some 500 instructions per element, and dictionaries have thousands.
 std::string subindex_name(std::uint32_t subindex) {
-    char buffer[24];
-    std::snprintf(buffer, sizeof buffer, "SubIndex %03u", subindex);
-    return buffer;
+    std::string digits = std::to_string(subindex);
+    if (digits.size() < 3) digits.insert(0, 3 - digits.size(), '0');
+    return "SubIndex " + digits;
 }
 
 // Adds the elements of an array-typed item starting at `offset`.
-void add_array_elements(const Dictionary* dictionary, const ResolvedType& array, const DataTypeSubItem* item,
-                        std::uint64_t offset, const ObjectFlags* flags, ObjectLayout& layout) {
-    const ResolvedType element = resolve_type(dictionary, array.element_type);
+template <class Types>
+void add_array_elements(const Types& types, const ResolvedType& array, const DataTypeSubItem* item, std::uint64_t offset,
+                        const ObjectFlags* flags, ObjectLayout& layout) {
+    const ResolvedType element = resolve(types, array.element_type);
     std::uint64_t element_bits = element.bit_size;
     if (element_bits == 0 && array.array_elements > 0) element_bits = array.bit_size / array.array_elements;
     // Guard against absurd element counts in hostile files: a CoE object has at most 255 sub-indices.
     const std::uint64_t count = std::min<std::uint64_t>(array.array_elements, 255);
     const std::int64_t first = array.array_lower_bound > 0 ? array.array_lower_bound : 1;
+    layout.entries.reserve(layout.entries.size() + count);
     for (std::uint64_t i = 0; i < count; ++i) {
-        ObjectEntry e;
         const std::int64_t sub = first + static_cast<std::int64_t>(i);
         if (sub > 255) break;
+        ObjectEntry& e = layout.entries.emplace_back();
         e.subindex = static_cast<std::uint32_t>(sub);
         e.name = subindex_name(e.subindex);
         e.type = array.element_type;
@@ -120,31 +174,30 @@ void add_array_elements(const Dictionary* dictionary, const ResolvedType& array,
         e.bit_offset = offset + i * element_bits;
         e.flags = flags;
         e.type_item = item;
-        layout.entries.push_back(std::move(e));
     }
 }
 
-}  // namespace
-
-ObjectLayout layout_of(const Dictionary* dictionary, const Object& object) {
+template <class Types>
+ObjectLayout build_layout(const Types& types, const Object& object) {
     ObjectLayout layout;
     const ObjectFlags* object_flags = object.flags ? &*object.flags : nullptr;
-    const ResolvedType type = resolve_type(dictionary, object.type);
+    const ResolvedType type = resolve(types, object.type);
 
     if (type.is_structure && type.definition) {
         bool has_array_item = false;
         std::uint32_t next_subindex = 0;
+        layout.entries.reserve(type.definition->sub_items.size());  // array items reserve their elements
         for (const auto& item : type.definition->sub_items) {
-            const ResolvedType item_type = resolve_type(dictionary, item.type);
+            const ResolvedType item_type = resolve(types, item.type);
             const ObjectFlags* flags = item.flags ? &*item.flags : object_flags;
             if (item_type.is_array && !item.subindex) {
                 has_array_item = true;
                 const std::size_t before = layout.entries.size();
-                add_array_elements(dictionary, item_type, &item, item.bit_offset, flags, layout);
+                add_array_elements(types, item_type, &item, item.bit_offset, flags, layout);
                 if (layout.entries.size() > before) next_subindex = layout.entries.back().subindex + 1;
                 continue;
             }
-            ObjectEntry e;
+            ObjectEntry& e = layout.entries.emplace_back();
             e.subindex = item.subindex.value_or(next_subindex);
             next_subindex = e.subindex + 1;
             e.name = item.name;
@@ -154,7 +207,6 @@ ObjectLayout layout_of(const Dictionary* dictionary, const Object& object) {
             e.bit_offset = item.bit_offset;
             e.flags = flags;
             e.type_item = &item;
-            layout.entries.push_back(std::move(e));
         }
         layout.code = has_array_item ? ObjectCode::array : ObjectCode::record;
     } else if (type.is_array) {
@@ -164,11 +216,12 @@ ObjectLayout layout_of(const Dictionary* dictionary, const Object& object) {
         count.subindex = 0;
         count.name = subindex_name(0);
         count.type = "USINT";
-        count.basic = find_basic_type("USINT");
+        static const BasicType* const usint = find_basic_type("USINT");
+        count.basic = usint;
         count.bit_size = 8;
         count.flags = object_flags;
         layout.entries.push_back(std::move(count));
-        add_array_elements(dictionary, type, nullptr, 16, object_flags, layout);
+        add_array_elements(types, type, nullptr, 16, object_flags, layout);
     } else {
         ObjectEntry e;
         e.subindex = 0;
@@ -203,5 +256,10 @@ ObjectLayout layout_of(const Dictionary* dictionary, const Object& object) {
     }
     return layout;
 }
+
+}  // namespace
+
+ObjectLayout layout_of(const Dictionary* dictionary, const Object& object) { return build_layout(ScannedTypes{dictionary}, object); }
+ObjectLayout layout_of(const DataTypeIndex& types, const Object& object) { return build_layout(IndexedTypes{types}, object); }
 
 }  // namespace esi

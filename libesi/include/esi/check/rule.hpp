@@ -2,6 +2,7 @@
 // A lint rule: an id, a default severity, a rationale that cites its source, examples, and a
 // check over the model. Rules never print; they report through a RuleContext.
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,9 @@
 namespace esi {
 
 class RuleContext;
+namespace rules {
+class RuleCache;  // indexes of the document's Dictionaries shared by the rules (libesi/src/check)
+}
 
 using CheckFunction = void (*)(const EsiDocument& document, RuleContext& context);
 
@@ -30,15 +34,20 @@ struct Rule {
 // What a rule sees while it runs: the document, the limits that apply, and a way to report.
 class RuleContext {
 public:
+    // `cache`, when given, is shared by all rules run over this document (run_rules), so indexes
+    // and object layouts are built once; without it the context builds its own.
     RuleContext(const EsiDocument& document, const Rule& rule, Severity severity, const EffectiveConfig& config,
-                Diagnostics& sink)
-        : document_(document), rule_(rule), severity_(severity), config_(config), sink_(sink) {}
+                Diagnostics& sink, rules::RuleCache* cache = nullptr);
+    ~RuleContext();
+    RuleContext(const RuleContext&) = delete;
+    RuleContext& operator=(const RuleContext&) = delete;
 
     [[nodiscard]] const EsiDocument& document() const { return document_; }
     // The vendor limits that apply to a device (overrides may scope limits by product code).
     [[nodiscard]] const Limits& limits_for(const Device& device) const { return config_.limits_for(device.type.product_code); }
     [[nodiscard]] const Limits& limits() const { return config_.limits; }
     [[nodiscard]] const Rule& rule() const { return rule_; }
+    [[nodiscard]] rules::RuleCache& cache();
 
     void report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes = {});
     // A note pointing at another place in the same file.
@@ -52,6 +61,8 @@ private:
     Severity severity_;
     const EffectiveConfig& config_;
     Diagnostics& sink_;
+    rules::RuleCache* cache_;
+    std::unique_ptr<rules::RuleCache> own_cache_;
 };
 
 }  // namespace esi

@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "esi/data_types.hpp"
@@ -28,6 +30,28 @@ struct ResolvedType {
 
 [[nodiscard]] ResolvedType resolve_type(const Dictionary* dictionary, std::string_view type_name);
 
+// The DataTypes of one Dictionary by name, for callers that resolve many names (lint runs
+// resolve every object's and sub-item's type): the overloads below give the same answers as
+// the Dictionary ones, with a hash lookup per name instead of a scan of DataTypes. Holds
+// pointers into the Dictionary, which must outlive it unchanged.
+class DataTypeIndex {
+public:
+    explicit DataTypeIndex(const Dictionary* dictionary);
+    [[nodiscard]] const Dictionary* dictionary() const { return dictionary_; }
+    // The first DataType of that exact name, as Dictionary::find_data_type.
+    [[nodiscard]] const DataType* find(std::string_view name) const;
+
+private:
+    const Dictionary* dictionary_;
+    std::unordered_map<std::string_view, const DataType*> by_name_;
+    // DataTypes named like a basic type (Beckhoff lists "UINT" with its BitSize), by the basic
+    // type's place in basic_types(): most names a layout resolves are basic, and this spares
+    // them the hash lookup.
+    std::vector<const DataType*> basic_named_;
+};
+
+[[nodiscard]] ResolvedType resolve_type(const DataTypeIndex& types, std::string_view type_name);
+
 enum class ObjectCode { var, array, record };
 [[nodiscard]] std::string_view to_string(ObjectCode code);
 
@@ -50,5 +74,6 @@ struct ObjectLayout {
 };
 
 [[nodiscard]] ObjectLayout layout_of(const Dictionary* dictionary, const Object& object);
+[[nodiscard]] ObjectLayout layout_of(const DataTypeIndex& types, const Object& object);
 
 }  // namespace esi

@@ -1,0 +1,25 @@
+#include "check/rule_cache.hpp"
+
+namespace esi::rules {
+
+RuleCache::PerDictionary& RuleCache::entry(const Dictionary* dictionary) {
+    PerDictionary& e = dictionaries_[dictionary];
+    if (!e.types) e.types = std::make_unique<TypeIndex>(dictionary);
+    return e;
+}
+
+const TypeIndex& RuleCache::types(const Dictionary* dictionary) { return *entry(dictionary).types; }
+
+const DictionaryIndex& RuleCache::objects(const Dictionary* dictionary) {
+    PerDictionary& e = entry(dictionary);
+    if (!e.objects) e.objects = std::make_unique<DictionaryIndex>(dictionary, e.types->data_types());
+    return *e.objects;
+}
+
+EntryTypes& RuleCache::entry_types(const Dictionary* dictionary) {
+    PerDictionary& e = entry(dictionary);
+    if (!e.entry_types) e.entry_types = std::make_unique<EntryTypes>(*e.types);
+    return *e.entry_types;
+}
+
+}  // namespace esi::rules

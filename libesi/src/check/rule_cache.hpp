@@ -1,0 +1,38 @@
+#pragma once
+// What several rules compute about the same Dictionary, computed once per lint run: its
+// DataTypes by name (with BaseType loops), its objects by index and their layouts. Before,
+// each of some twenty rules built its own indexes and layouts, and the layouts of every
+// object were computed up to seven times per file.
+//
+// A cache belongs to one run of the rules over one document (run_rules) on one thread; the
+// model must not change while it lives.
+
+#include <memory>
+#include <unordered_map>
+
+#include "check/od_type_index.hpp"
+#include "check/pdo_entry_type.hpp"
+#include "check/queries.hpp"
+
+namespace esi::rules {
+
+class RuleCache {
+public:
+    // A null Dictionary gives the index of an owner without one: only basic types resolve.
+    [[nodiscard]] const TypeIndex& types(const Dictionary* dictionary);
+    [[nodiscard]] const DictionaryIndex& objects(const Dictionary* dictionary);
+    // What PDO entries' DataTypes mean for an owner with this Dictionary (or none).
+    [[nodiscard]] EntryTypes& entry_types(const Dictionary* dictionary);
+
+private:
+    struct PerDictionary {
+        std::unique_ptr<TypeIndex> types;
+        std::unique_ptr<DictionaryIndex> objects;
+        std::unique_ptr<EntryTypes> entry_types;
+    };
+    PerDictionary& entry(const Dictionary* dictionary);
+
+    std::unordered_map<const Dictionary*, PerDictionary> dictionaries_;
+};
+
+}  // namespace esi::rules
