@@ -11,10 +11,15 @@ seconds=${1:-60}
 [ $# -gt 0 ] && shift
 launcher=""
 command -v ccache >/dev/null 2>&1 && launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DESI_BUILD_FUZZERS=ON \
+# -O1 with line tables and assertions on: the usual fuzzing build (fast to compile, asserts and
+# sanitizers catch what they can, stack traces name the line).
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Fuzz -DCMAKE_CXX_FLAGS_FUZZ="-O1 -gline-tables-only" \
+    -DCMAKE_C_FLAGS_FUZZ="-O1 -gline-tables-only" -DESI_BUILD_FUZZERS=ON \
     -DESI_BUILD_TESTS=OFF -DESI_BUILD_BENCH=OFF $launcher >/dev/null
-cmake --build build-fuzz
-targets=${*:-$(cd build-fuzz/fuzz && ls *_fuzzer)}
+# Only the fuzz targets (and the library under them), not the instrumented command-line tools.
+targets=${*:-$(cd fuzz && ls *_fuzzer.cpp | sed 's/\.cpp$//')}
+# shellcheck disable=SC2086
+cmake --build build-fuzz --target $targets
 shared=../shared/corpus
 mkdir -p build-fuzz/logs
 # diff_fuzzer seeds from the corpus: revision pairs of one product family, joined by the four
@@ -47,7 +52,7 @@ for target in $targets; do
     dict=fuzz/esi.dict
     case $target in
         xml_* | writer_* | codegen_*) seeds="samples/esi tests/rules/fixtures $shared/esi" ;;
-        yaml_*) seeds="samples tests/yaml"; dict=fuzz/yaml.dict ;;
+        yaml_*) seeds="samples fuzz/seeds/yaml"; dict=fuzz/yaml.dict ;;
         sii_*) seeds="$shared/sii fuzz/seeds/sii"; dict=fuzz/sii.dict ;;
         diff_*) seeds="fuzz/seeds/diff build-fuzz/seeds/diff" ;;
     esac

@@ -31,6 +31,9 @@
 #define LLVMFuzzerTestOneInput codegen_fuzz_one
 #include "../../fuzz/codegen_fuzzer.cpp"
 #undef LLVMFuzzerTestOneInput
+#define LLVMFuzzerTestOneInput yaml_source_fuzz_one
+#include "../../fuzz/yaml_source_fuzzer.cpp"
+#undef LLVMFuzzerTestOneInput
 
 namespace {
 
@@ -78,3 +81,7 @@ TEST(FuzzReplay, WriterRoundTrip) {
 TEST(FuzzReplay, Diff) { EXPECT_GT(replay(diff_fuzz_one, "diff_fuzzer", {source("fuzz/seeds/diff")}), 0u); }
 
 TEST(FuzzReplay, Codegen) { EXPECT_GT(replay(codegen_fuzz_one, "codegen_fuzzer", {source("samples/esi")}), 0u); }
+
+TEST(FuzzReplay, YamlSource) {
+    EXPECT_GT(replay(yaml_source_fuzz_one, "yaml_source_fuzzer", {source("samples"), source("fuzz/seeds/yaml")}), 0u);
+}
