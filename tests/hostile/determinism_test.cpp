@@ -52,16 +52,19 @@ TEST(Determinism, EsiSiiBuildsTheSameBytesTwice) {
 }
 
 TEST(Determinism, EsiGenWritesTheSameFilesTwice) {
-    esi::test::TempDir dir;
-    const auto sample = (esi::test::source_dir() / "samples/esi/example-digital-io.xml").string();
-    for (const std::string out : {"first", "second"}) {
-        const auto gen = esi::test::run_child({esi::test::tool("esi-gen").string(), sample, "-o", (dir / out).string()});
-        ASSERT_EQ(gen.exit_code, 0) << gen.err;
+    // An ESI source and a YAML source (derivation runs too).
+    for (const std::string relative : {"samples/esi/example-digital-io.xml", "samples/servo-item-c-series.yaml"}) {
+        esi::test::TempDir dir;
+        const auto sample = (esi::test::source_dir() / relative).string();
+        for (const std::string out : {"first", "second"}) {
+            const auto gen = esi::test::run_child({esi::test::tool("esi-gen").string(), sample, "-o", (dir / out).string()});
+            ASSERT_EQ(gen.exit_code, 0) << relative << ": " << gen.err;
+        }
+        const auto first = esi::test::snapshot(dir / "first");
+        const auto second = esi::test::snapshot(dir / "second");
+        EXPECT_GE(first.size(), 5u) << relative;
+        EXPECT_TRUE(first == second) << relative << ": esi-gen wrote different files on the second run";
     }
-    const auto first = esi::test::snapshot(dir / "first");
-    const auto second = esi::test::snapshot(dir / "second");
-    EXPECT_GE(first.size(), 5u);
-    EXPECT_TRUE(first == second) << "esi-gen wrote different files on the second run";
 }
 
 TEST(Determinism, EsiDiffReportsAreTheSameTwice) {
