@@ -129,7 +129,8 @@ TEST(HostileSii, EndlessCategoryChainIsCutAfterAThousandCategories) {
 
 TEST(HostileSii, ChainsWithoutEndMarkerOrIntoBlankMemoryEnd) {
     Bytes no_end = image_with({0x01, 0x00, 0x01, 0x00, 0xAA, 0xBB});
-    const auto* missing = find(esi::sii::decode_image(no_end), "sii-no-end-marker");
+    const auto no_end_decoded = esi::sii::decode_image(no_end);  // kept: find() points into it
+    const auto* missing = find(no_end_decoded, "sii-no-end-marker");
     ASSERT_NE(missing, nullptr);
     EXPECT_EQ(missing->offset, no_end.size());
 
@@ -144,7 +145,8 @@ TEST(HostileSii, ChainsWithoutEndMarkerOrIntoBlankMemoryEnd) {
     Bytes past = image_with(Bytes(256, 0x01), 0);  // 128-byte EEPROM, categories after the header
     past.push_back(0xFF);
     past.push_back(0xFF);
-    const auto* wrap = find(esi::sii::decode_image(past), "sii-chain-past-size");
+    const auto past_decoded = esi::sii::decode_image(past);
+    const auto* wrap = find(past_decoded, "sii-chain-past-size");
     ASSERT_NE(wrap, nullptr);
     EXPECT_EQ(wrap->offset, 0x80u);
 }
