@@ -57,17 +57,17 @@ std::vector<YamlCase> cases() {
     std::string huge_key = header + "    ? " + std::string(12 << 20, 'k') + "\n    : 1\n";
     std::string too_large = header + "    comment: \"" + std::string(17 << 20, 'x') + "\"\n";
     return {
-        {"alias bomb", billion_laughs(), "yaml-alias-expansion", "device.yaml:6:", 64},
-        {"100,000 nested flow mappings", deep_flow, "yaml-nesting-depth", "device.yaml:1:", 64},
-        {"1,000 nested block mappings", deep_block, "yaml-nesting-depth", "device.yaml:", 64},
+        {"alias bomb", billion_laughs(), "yaml-alias-expansion", "device.yaml:6:45", 64},
+        {"100,000 nested flow mappings", deep_flow, "yaml-nesting-depth", "device.yaml:1:261", 64},
+        {"1,000 nested block mappings", deep_block, "yaml-nesting-depth", "device.yaml:71:129", 64},
         {"12 MB scalar as a number", huge_scalar, "yaml-number-range", "device.yaml:6:19", 256},
         {"12 MB unknown key", huge_key, "yaml-unknown-key", "device.yaml:9:7", 256},
         {"17 MB file", too_large, "yaml-too-large", "device.yaml", 128},
         {"duplicate key", header + "    name: Again\n", "yaml-duplicate-key", "device.yaml:9:5", 64},
-        {"tab indentation", esi::test::replace_once(header, "    name: Device", "\tname: Device"), "yaml-syntax", "device.yaml:5:", 64},
+        {"tab indentation", esi::test::replace_once(header, "    name: Device", "\tname: Device"), "yaml-syntax", "device.yaml:5:1", 64},
         {"invalid UTF-8", esi::test::replace_once(header, "name: Example", "name: \"Ex\xC3\x28mple\""), "yaml-syntax", "device.yaml:1:", 64},
-        {"UTF-16 lone surrogate", std::string("\xFF\xFE\x00\xD8v\x00", 6), "yaml-syntax", "device.yaml:1:", 64},
-        {"NUL byte", esi::test::replace_once(header, "Example", std::string("Exa\0mple", 8)), "yaml-syntax", "device.yaml:1:", 64},
+        {"UTF-16 lone surrogate", std::string("\xFF\xFE\x00\xD8v\x00", 6), "yaml-syntax", "device.yaml:1:3", 64},  // its NUL bytes: not a YAML text
+        {"NUL byte", esi::test::replace_once(header, "Example", std::string("Exa\0mple", 8)), "yaml-syntax", "device.yaml:1:30", 64},
     };
 }
 
