@@ -98,8 +98,26 @@ int main(int argc, char** argv) {
         else files.emplace_back(p);
     }
     if (!files.empty()) report = esi::lint_paths(files, options);
+    std::string bytes;
     if (use_stdin) {
-        const std::string bytes{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+        // stdin is bounded like a file (esi::max_input_bytes): a stream that never ends (a
+        // device, a runaway pipe) is an unreadable input, not an exhausted machine.
+        char chunk[1 << 16];
+        while (bytes.size() <= esi::max_input_bytes && (std::cin.read(chunk, sizeof chunk) || std::cin.gcount() > 0))
+            bytes.append(chunk, static_cast<std::size_t>(std::cin.gcount()));
+        if (bytes.size() > esi::max_input_bytes) {
+            esi::FileReport unreadable;
+            unreadable.path = "<stdin>";
+            unreadable.unreadable = true;
+            unreadable.diagnostics.emplace(esi::Severity::error, "io-error",
+                                           "cannot read: larger than " + std::to_string(esi::max_input_bytes >> 20) +
+                                               " MiB, the input size limit",
+                                           "<stdin>", {});
+            report.files.push_back(std::move(unreadable));
+            use_stdin = false;
+        }
+    }
+    if (use_stdin) {
         std::optional<std::filesystem::path> config_path = options.config_path;
         if (!config_path) config_path = esi::find_config_for(std::filesystem::current_path() / "stdin.xml");
         esi::EffectiveConfig effective;

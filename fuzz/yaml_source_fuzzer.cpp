@@ -1,10 +1,12 @@
-// Fuzz target: the YAML device source front end, derivation, and every lint rule on the derived
-// model. Any input must give diagnostics, never a crash, a hang or unbounded memory.
+// Fuzz target: the YAML device source front end, derivation, every lint rule on the derived
+// model, and the ESI writer on it (esi-gen writes the derived model as ESI XML). Any input must
+// give diagnostics, never a crash, a hang or unbounded memory.
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
 
 #include "esi/lint/lint.hpp"
+#include "esi/xml/writer.hpp"
 #include "esi/yaml/source.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -14,6 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         static const esi::EffectiveConfig config{};
         const esi::Diagnostics found = esi::run_rules(*source.document, config);
         (void)found;
+        (void)esi::write_esi(*source.document);
     }
     return 0;
 }

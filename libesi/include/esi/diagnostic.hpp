@@ -16,6 +16,16 @@ enum class Severity { info, warning, error };
 // Accepts "info", "warning", "error" (case-sensitive); returns false on anything else.
 [[nodiscard]] bool parse_severity(std::string_view text, Severity& out);
 
+// Messages quote values from the input, and a hostile file can make a value megabytes long.
+// A diagnostic keeps at most this many bytes of a message: its start and its end (which carries
+// the explanation), with the number of bytes left out in between (docs/reliability.md).
+inline constexpr std::size_t max_message_bytes = 4096;
+[[nodiscard]] std::string bounded_message(std::string message);
+
+// A value for quoting in a message: the text itself when it has at most `max_bytes` bytes, else
+// its first bytes (cut at a UTF-8 character boundary) followed by "… (N bytes)".
+[[nodiscard]] std::string excerpt(std::string_view text, std::size_t max_bytes = 64);
+
 // A secondary location that explains a diagnostic ("first defined here").
 struct DiagnosticNote {
     std::string path;
@@ -34,7 +44,7 @@ struct Diagnostic {
 
 class Diagnostics {
 public:
-    void add(Diagnostic diagnostic) { items_.push_back(std::move(diagnostic)); }
+    void add(Diagnostic diagnostic);
     Diagnostic& emplace(Severity severity, std::string rule, std::string message, std::string path, SourcePos pos);
     void append(const Diagnostics& other) { items_.insert(items_.end(), other.items_.begin(), other.items_.end()); }
     void append(Diagnostics&& other);

@@ -146,6 +146,14 @@ void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
                     context.report(pdo.pos, pdo_name(pdo) + " has " + std::to_string(pdo.entries.size()) +
                                                 " entries; a PDO mapping object holds at most 255");
                 for (const auto& entry : pdo.entries) {
+                    // BitLen 0 maps nothing. Beckhoff ships it on padding entries (a zero-width
+                    // gap, harmless); on an object it is a corrupt mapping entry.
+                    if (entry.bit_len == 0 && !entry.is_padding() && entry.bit_len_pos.line) {
+                        context.report(entry.bit_len_pos, entry_label(entry) +
+                                                              " has BitLen 0; a mapping entry maps 1 to 255 bits of its object, "
+                                                              "so this one maps nothing");
+                        continue;
+                    }
                     if (entry.bit_len <= max_bit_len) continue;
                     context.report(entry.bit_len_pos.line ? entry.bit_len_pos : entry.pos,
                                    entry_label(entry) + " has BitLen " +

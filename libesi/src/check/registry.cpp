@@ -54,6 +54,7 @@ rules::RuleCache& RuleContext::cache() {
 
 void RuleContext::report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes) {
     Diagnostic& d = sink_.emplace(severity_, std::string(rule_.id), std::move(message), document_.path, pos);
+    for (auto& note : notes) note.message = bounded_message(std::move(note.message));
     d.notes = std::move(notes);
 }
 

@@ -46,10 +46,12 @@ void add_pdo(std::vector<Rule>& out) {
         "<RxPdo><Index>#x1600</Index><Exclude>#x1601</Exclude>…</RxPdo><RxPdo><Index>#x1601</Index>…</RxPdo>",
         pdo::check_exclude_unknown});
     out.push_back(Rule{
-        "pdo-mapping-limits", Severity::error, "More than 255 entries in a PDO, BitLen above 255, or more than 255 PDOs",
+        "pdo-mapping-limits", Severity::error, "More than 255 entries in a PDO, BitLen 0 or above 255, or more than 255 PDOs",
         "The CoE mapping objects count their entries in the 8-bit sub-index 0 and store each entry's length in 8 bits; the "
         "assignment objects 0x1C1x likewise list at most 255 PDOs (ETG.1000.6 PDO mapping/assignment; the SII PDO category "
-        "of ETG.2010 has one-byte counts too). KickCAT rejects such files ('>255 entries', 'BitLen > 255'); domain notes S19.",
+        "of ETG.2010 has one-byte counts too). KickCAT rejects such files ('>255 entries', 'BitLen > 255'); domain notes S19. "
+        "A BitLen of 0 on an object maps nothing; padding entries with BitLen 0 (a zero-width gap, found in a Beckhoff "
+        "module file of the corpus) are harmless and not reported.",
         "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>512</BitLen>…</Entry>",
         "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>32</BitLen>…</Entry>", pdo::check_mapping_limits});
     out.push_back(Rule{

@@ -60,6 +60,14 @@ void add_xml(std::vector<Rule>& out) {
         "Deeper content is not kept so that reading stays bounded in time and memory (see docs/reliability.md).",
         "<VendorSpecific><a><a><a>… (thousands deep)", "<VendorSpecific><Note>…</Note></VendorSpecific>"});
     out.push_back(Rule{
+        "xml-doctype", Severity::warning, "A DOCTYPE declaration, which is ignored",
+        "ESI files are defined by the ETG schema, not a DTD; no vendor file carries a DOCTYPE. A DOCTYPE with "
+        "entity declarations is how entity-expansion bombs (\"billion laughs\") and external entities (XXE: "
+        "reading local files or URLs) get into an XML reader (OWASP XXE Prevention Cheat Sheet). esi-lint never "
+        "processes it: entities are not expanded, nothing is fetched, and `&name;` references stay as written.",
+        "<!DOCTYPE EtherCATInfo [<!ENTITY vendor SYSTEM \"file:///etc/passwd\">]>",
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?> (no DOCTYPE)"});
+    out.push_back(Rule{
         "xml-schema", Severity::error, "The file does not validate against the ETG schema (--xsd)",
         "Reported only with --xsd DIR: libxml2 validates the file against the ETG schema files in DIR "
         "(EtherCATInfo.xsd, EtherCATModule.xsd, EtherCATDict.xsd). Masters and the ETG conformance test tool "

@@ -22,8 +22,49 @@ bool parse_severity(std::string_view text, Severity& out) {
     return true;
 }
 
+namespace {
+
+// The largest length <= n that does not split a UTF-8 sequence of `text`.
+std::size_t character_boundary(std::string_view text, std::size_t n) {
+    if (n >= text.size()) return text.size();
+    while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80) --n;
+    return n;
+}
+
+}  // namespace
+
+std::string bounded_message(std::string message) {
+    if (message.size() <= max_message_bytes) return message;
+    // Keep three quarters from the start and the rest from the end, both cut at characters.
+    const std::size_t head = character_boundary(message, max_message_bytes * 3 / 4);
+    std::size_t tail_start = message.size() - max_message_bytes / 4;
+    while (tail_start < message.size() && (static_cast<unsigned char>(message[tail_start]) & 0xC0) == 0x80) ++tail_start;
+    const std::size_t left_out = tail_start - head;
+    std::string out = message.substr(0, head);
+    out += " […";
+    out += std::to_string(left_out);
+    out += " bytes left out…] ";
+    out.append(message, tail_start, std::string::npos);
+    return out;
+}
+
+std::string excerpt(std::string_view text, std::size_t max_bytes) {
+    if (text.size() <= max_bytes) return std::string(text);
+    std::string out(text.substr(0, character_boundary(text, max_bytes)));
+    out += "… (";
+    out += std::to_string(text.size());
+    out += " bytes)";
+    return out;
+}
+
+void Diagnostics::add(Diagnostic diagnostic) {
+    diagnostic.message = bounded_message(std::move(diagnostic.message));
+    for (auto& note : diagnostic.notes) note.message = bounded_message(std::move(note.message));
+    items_.push_back(std::move(diagnostic));
+}
+
 Diagnostic& Diagnostics::emplace(Severity severity, std::string rule, std::string message, std::string path, SourcePos pos) {
-    items_.push_back(Diagnostic{severity, std::move(rule), std::move(message), std::move(path), pos, {}});
+    items_.push_back(Diagnostic{severity, std::move(rule), bounded_message(std::move(message)), std::move(path), pos, {}});
     return items_.back();
 }
 

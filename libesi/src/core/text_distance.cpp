@@ -27,6 +27,11 @@ std::string closest_match(std::string_view word, std::span<const std::string_vie
     std::size_t best = limit + 1;
     std::string_view best_candidate;
     for (std::string_view candidate : candidates) {
+        // The distance is at least the difference in length: candidates that cannot beat the best
+        // are skipped, so a hostile multi-megabyte word costs no quadratic comparison.
+        const std::size_t length_difference =
+            word.size() > candidate.size() ? word.size() - candidate.size() : candidate.size() - word.size();
+        if (length_difference >= best) continue;
         const std::size_t d = edit_distance(word, candidate);
         if (d < best) {
             best = d;

@@ -4,8 +4,10 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <random>
+#include <set>
 
 namespace esi {
 
@@ -13,75 +15,166 @@ namespace {
 
 std::string error_text() { return std::strerror(errno); }
 
-// Writes content to a new temporary file in the target's directory, fsyncs it, returns its path.
-bool write_temporary(const std::filesystem::path& target, const std::string& content, std::filesystem::path& temporary,
-                     std::string& error) {
+std::filesystem::path directory_of(const std::filesystem::path& target) {
+    return target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+}
+
+// A file written in full beside its target, not yet in place. On Linux it is an unnamed file
+// (O_TMPFILE) that gets a name only just before the rename, so a process killed while writing
+// (SIGKILL, SIGXFSZ, out of memory) leaves no temporary file behind; elsewhere, or on file
+// systems without O_TMPFILE, it is a hidden named file that is removed on every error path.
+struct Staged {
+    int fd = -1;                    // open unnamed file (O_TMPFILE), or -1
+    std::filesystem::path named;    // named temporary file, or empty
+};
+
+bool write_all(int fd, const std::string& content, std::string& error) {
+    const char* data = content.data();
+    std::size_t left = content.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd, data, left);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            error = error_text();
+            return false;
+        }
+        data += n;
+        left -= static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0) {
+        error = error_text();
+        return false;
+    }
+    return true;
+}
+
+std::filesystem::path temporary_name(const std::filesystem::path& target) {
     static thread_local std::mt19937_64 random{std::random_device{}()};
-    const std::filesystem::path dir = target.has_parent_path() ? target.parent_path() : std::filesystem::path(".");
+    return directory_of(target) / ("." + target.filename().string() + ".tmp" + std::to_string(random() % 1000000000));
+}
+
+bool stage_named(const std::filesystem::path& target, const std::string& content, Staged& staged, std::string& error) {
     for (int attempt = 0; attempt < 16; ++attempt) {
-        temporary = dir / ("." + target.filename().string() + ".tmp" + std::to_string(random() % 1000000000));
+        const std::filesystem::path temporary = temporary_name(target);
         const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
         if (fd < 0) {
             if (errno == EEXIST) continue;
             error = error_text();
             return false;
         }
-        const char* data = content.data();
-        std::size_t left = content.size();
-        while (left > 0) {
-            const ssize_t n = ::write(fd, data, left);
-            if (n < 0) {
-                if (errno == EINTR) continue;
-                error = error_text();
-                ::close(fd);
-                ::unlink(temporary.c_str());
-                return false;
-            }
-            data += n;
-            left -= static_cast<std::size_t>(n);
-        }
-        if (::fsync(fd) != 0 || ::close(fd) != 0) {
-            error = error_text();
+        const bool written = write_all(fd, content, error);
+        if (::close(fd) != 0 && written) error = error_text();
+        if (!written || !error.empty()) {
             ::unlink(temporary.c_str());
             return false;
         }
+        staged.named = temporary;
         return true;
     }
     error = "cannot create a temporary file";
     return false;
 }
 
+bool stage(const std::filesystem::path& target, const std::string& content, Staged& staged, std::string& error) {
+#ifdef O_TMPFILE
+    const int fd = ::open(directory_of(target).c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
+    if (fd >= 0) {
+        if (!write_all(fd, content, error)) {
+            ::close(fd);  // an unnamed file vanishes with its last descriptor
+            return false;
+        }
+        staged.fd = fd;
+        return true;
+    }
+    // Kernels or file systems without O_TMPFILE answer EOPNOTSUPP, EISDIR or EINVAL.
+    if (errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) {
+        error = error_text();
+        return false;
+    }
+#endif
+    return stage_named(target, content, staged, error);
+}
+
+void discard(Staged& staged) {
+    if (staged.fd >= 0) ::close(staged.fd);
+    if (!staged.named.empty()) ::unlink(staged.named.c_str());
+    staged = {};
+}
+
+// Gives an unnamed file its temporary name (through /proc/self/fd, which needs no privilege,
+// unlike linkat's AT_EMPTY_PATH) and moves the named file over the target.
+bool commit(const std::filesystem::path& target, Staged& staged, std::string& error) {
+    if (staged.fd >= 0) {
+        const std::string fd_path = "/proc/self/fd/" + std::to_string(staged.fd);
+        for (int attempt = 0; attempt < 16 && staged.named.empty(); ++attempt) {
+            const std::filesystem::path temporary = temporary_name(target);
+            if (::linkat(AT_FDCWD, fd_path.c_str(), AT_FDCWD, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) staged.named = temporary;
+            else if (errno != EEXIST) break;
+        }
+        if (staged.named.empty()) {
+            error = "cannot name the temporary file: " + error_text();
+            return false;
+        }
+        ::close(staged.fd);
+        staged.fd = -1;
+    }
+    if (std::rename(staged.named.c_str(), target.c_str()) != 0) {
+        error = error_text();
+        return false;
+    }
+    staged.named.clear();
+    return true;
+}
+
 }  // namespace
 
 Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
     Diagnostics diagnostics;
-    std::vector<std::filesystem::path> temporaries;
-    for (const auto& file : files) {
+    std::vector<Staged> staged(files.size());
+    auto discard_all = [&] {
+        for (auto& s : staged) discard(s);
+    };
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        const auto& file = files[i];
         std::error_code ec;
+        // Caught before anything is staged: a rename onto a directory would fail only after
+        // earlier files of the set were already in place.
+        if (std::filesystem::is_directory(file.path, ec)) {
+            diagnostics.emplace(Severity::error, "io-error", "cannot write: is a directory", file.path.string(), {});
+            break;
+        }
         if (file.path.has_parent_path()) std::filesystem::create_directories(file.path.parent_path(), ec);
         if (ec) {
             diagnostics.emplace(Severity::error, "io-error", "cannot create directory: " + ec.message(), file.path.parent_path().string(), {});
             break;
         }
-        std::filesystem::path temporary;
         std::string error;
-        if (!write_temporary(file.path, file.content, temporary, error)) {
+        if (!stage(file.path, file.content, staged[i], error)) {
             diagnostics.emplace(Severity::error, "io-error", "cannot write: " + error, file.path.string(), {});
             break;
         }
-        temporaries.push_back(temporary);
     }
     if (diagnostics.has_errors()) {
-        for (const auto& t : temporaries) ::unlink(t.c_str());
+        discard_all();
         return diagnostics;
     }
     // Every file is complete on disk; now move them into place.
+    std::set<std::filesystem::path> directories;
     for (std::size_t i = 0; i < files.size(); ++i) {
-        if (std::rename(temporaries[i].c_str(), files[i].path.c_str()) != 0) {
-            diagnostics.emplace(Severity::error, "io-error", "cannot replace file: " + error_text(), files[i].path.string(), {});
-            for (std::size_t k = i; k < temporaries.size(); ++k) ::unlink(temporaries[k].c_str());
-            break;
+        std::string error;
+        if (!commit(files[i].path, staged[i], error)) {
+            diagnostics.emplace(Severity::error, "io-error", "cannot replace file: " + error, files[i].path.string(), {});
+            discard_all();
+            return diagnostics;
         }
+        directories.insert(directory_of(files[i].path));
+    }
+    // Make the renames durable too: a crash right after returning must not bring back old files.
+    for (const auto& dir : directories) {
+        const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+        if (fd < 0) continue;
+        ::fsync(fd);
+        ::close(fd);
     }
     return diagnostics;
 }

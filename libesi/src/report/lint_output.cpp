@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <map>
 
@@ -40,6 +41,41 @@ std::string caret_line(std::string_view line, std::uint32_t column) {
         ++code_point;
     }
     out.push_back('^');
+    return out;
+}
+
+// A quoted source line is cut to a window around the column when it is long: a minified file or
+// a hostile 50 MB attribute would otherwise be printed whole, twice (line and caret line).
+constexpr std::size_t quoted_line_limit = 240;
+
+struct QuotedLine {
+    std::string text;
+    std::uint32_t column = 0;  // the caret column within `text`
+};
+
+QuotedLine quoted_window(std::string_view line, std::uint32_t column) {
+    if (line.size() <= quoted_line_limit) return {std::string(line), column};
+    auto is_continuation = [&](std::size_t i) { return (static_cast<unsigned char>(line[i]) & 0xC0) == 0x80; };
+    // Byte offset of the column (columns count code points).
+    std::size_t at = 0;
+    for (std::uint32_t cp = 1; at < line.size() && cp < column; ++cp) {
+        ++at;
+        while (at < line.size() && is_continuation(at)) ++at;
+    }
+    std::size_t begin = at > quoted_line_limit / 3 ? at - quoted_line_limit / 3 : 0;
+    while (begin > 0 && is_continuation(begin)) --begin;
+    std::size_t end = std::min(line.size(), begin + quoted_line_limit);
+    while (end < line.size() && is_continuation(end)) ++end;
+    QuotedLine out;
+    out.column = 1;
+    if (begin > 0) {
+        out.text = "…";
+        ++out.column;
+    }
+    for (std::size_t i = begin; i < at; ++i)
+        if (!is_continuation(i)) ++out.column;
+    out.text.append(line.substr(begin, end - begin));
+    if (end < line.size()) out.text += "…";
     return out;
 }
 
@@ -109,8 +145,9 @@ std::string render_text(const LintReport& report, const TextOutputOptions& optio
             const auto it = lines.find(d.pos.line);
             const std::string_view line = it == lines.end() ? std::string_view{} : std::string_view(it->second);
             if (!line.empty()) {
-                out += fmt::format("{:>6} | {}\n", d.pos.line, line);
-                out += fmt::format("{:>6} | {}\n", "", caret_line(line, d.pos.column));
+                const QuotedLine quoted = quoted_window(line, d.pos.column);
+                out += fmt::format("{:>6} | {}\n", d.pos.line, quoted.text);
+                out += fmt::format("{:>6} | {}\n", "", caret_line(quoted.text, quoted.column));
             }
         }
         for (const auto& note : d.notes) out += fmt::format("{}: note: {}\n", location(note.path, note.pos), note.message);

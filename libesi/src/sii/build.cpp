@@ -207,6 +207,16 @@ void Builder::build_copied_categories() {
         } else {
             diag(Severity::warning, "sii-category-data", fmt::format("Eeprom/Category {} has no payload; it is written empty", cat.cat_no), cat.pos);
         }
+        // The length word counts 16-bit words: a longer payload would be written with a
+        // truncated length and break the category chain after it.
+        if ((raw.bytes.size() + 1) / 2 > max_category_words) {
+            diag(Severity::error, "sii-category-size",
+                 fmt::format("Eeprom/Category {} has {} bytes of data; a category holds at most {} words ({} bytes), its "
+                             "length word is 16 bits",
+                             cat.cat_no, raw.bytes.size(), max_category_words, 2 * max_category_words),
+                 cat.data ? cat.data->pos : pos);
+            continue;
+        }
         const auto type = static_cast<std::uint16_t>(cat.cat_no);
         if (!is_generated(type)) {
             image_.categories.push_back(Category{type, std::move(raw), 0, 0});
@@ -481,6 +491,14 @@ void Builder::run() {
 
 void Builder::finish() {
     Header& h = image_.header;
+    for (const auto& c : image_.categories) {
+        const std::size_t words = (encode_content(c.content).size() + 1) / 2;
+        if (words > max_category_words)
+            diag(Severity::error, "sii-category-size",
+                 fmt::format("the {} category ({}) takes {} words; its length word holds at most {}", category_name(c.type),
+                             c.type, words, max_category_words),
+                 device_.pos);
+    }
     result_.content_bytes = encoded_size(image_);
     const Eeprom* eeprom = device_.eeprom ? &*device_.eeprom : nullptr;
     std::uint64_t eeprom_bytes = 0;

@@ -235,6 +235,20 @@ void check_header(std::span<const std::uint8_t> bytes, DecodedImage& out) {
                           h.mailbox_protocols));
 }
 
+// The categories decode_content turns into records (the others stay raw bytes anyway).
+bool is_typed(std::uint16_t type) {
+    switch (type) {
+        case category::strings:
+        case category::general:
+        case category::fmmu:
+        case category::sync_manager:
+        case category::tx_pdo:
+        case category::rx_pdo:
+        case category::dc: return true;
+        default: return false;
+    }
+}
+
 // The category walk of ETG.1000.6 (and IgH sii_write): type word, length word in words, payload.
 void walk_categories(std::span<const std::uint8_t> bytes, DecodedImage& out) {
     const std::uint64_t size = bytes.size();
@@ -243,6 +257,8 @@ void walk_categories(std::span<const std::uint8_t> bytes, DecodedImage& out) {
     std::size_t blank_run = 0;
     std::uint64_t blank_start = 0;
     bool past_size_reported = false;
+    std::size_t decoded_bytes = 0;  // payload of typed categories decoded so far
+    bool decode_limit_reported = false;
     while (true) {
         if (pos + 2 > size) {
             fault(out.faults, Severity::error, "sii-no-end-marker", std::min(pos, size),
@@ -263,6 +279,13 @@ void walk_categories(std::span<const std::uint8_t> bytes, DecodedImage& out) {
         const std::uint16_t type = static_cast<std::uint16_t>(bytes[pos] | (bytes[pos + 1] << 8));
         if (type == end_marker) {
             out.end_offset = pos;
+            return;
+        }
+        if (out.image.categories.size() >= max_categories) {
+            fault(out.faults, Severity::error, "sii-too-many-categories", pos,
+                  fmt::format("the category chain has more than {} categories at 0x{:04X}; the walk stops here (real "
+                              "images have a few dozen)",
+                              max_categories, pos));
             return;
         }
         if (pos + 4 > size) {
@@ -307,7 +330,19 @@ void walk_categories(std::span<const std::uint8_t> bytes, DecodedImage& out) {
         c.type = type;
         c.offset = static_cast<std::uint32_t>(pos);
         c.declared_words = words;
-        c.content = decode_content(type, bytes.subspan(payload_at, 2u * words), payload_at, out.faults);
+        const auto payload = bytes.subspan(payload_at, 2u * words);
+        if (is_typed(type) && decoded_bytes + payload.size() > max_decoded_payload_bytes) {
+            if (!decode_limit_reported)
+                fault(out.faults, Severity::warning, "sii-decode-limit", pos,
+                      fmt::format("{} at 0x{:04X} and every typed category after it are kept as raw bytes: the image has "
+                                  "more than {} bytes of them (real images have a few KiB)",
+                                  category_label(type), pos, max_decoded_payload_bytes));
+            decode_limit_reported = true;
+            c.content = RawData{{payload.begin(), payload.end()}};
+        } else {
+            if (is_typed(type)) decoded_bytes += payload.size();
+            c.content = decode_content(type, payload, payload_at, out.faults);
+        }
         out.image.categories.push_back(std::move(c));
         pos = payload_end;
     }

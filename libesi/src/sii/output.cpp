@@ -92,7 +92,7 @@ int hex_digit(char c) {
 }  // namespace
 
 HexParseResult parse_intel_hex(std::string_view text) {
-    constexpr std::uint64_t max_address = 16u * 1024u * 1024u;
+    constexpr std::uint64_t max_address = max_image_bytes;
     HexParseResult result;
     std::vector<std::uint8_t> image;
     std::uint64_t base = 0;
@@ -175,13 +175,20 @@ LoadedImage load_image(std::string_view raw) {
         out.bytes = std::move(hex.bytes);
         return out;
     }
+    if (raw.size() > max_image_bytes) {
+        out.error = fmt::format("{} bytes is larger than any SII EEPROM (word 0x3E describes at most 8 MiB; images up to "
+                                "{} MiB are read)",
+                                raw.size(), max_image_bytes >> 20);
+        return out;
+    }
     out.bytes = std::vector<std::uint8_t>(raw.begin(), raw.end());
     return out;
 }
 
 LoadedImage load_image_file(const std::filesystem::path& path) {
     std::string error;
-    const std::optional<std::string> raw = read_file_bytes(path, error);
+    // Intel HEX takes about 2.8 bytes of text per image byte.
+    const std::optional<std::string> raw = read_file_bytes(path, error, 4 * max_image_bytes);
     if (!raw) {
         LoadedImage out;
         out.error = "cannot read file: " + error;

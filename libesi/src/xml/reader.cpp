@@ -82,14 +82,14 @@ private:
         const ParsedNumber parsed = parse_number(text);
         if (!parsed.ok()) {
             report(Severity::error, "xml-number-format",
-                   describe(site) + ": '" + std::string(trim(text)) + "' is not a number (" + std::string(to_string(parsed.error)) +
+                   describe(site) + ": '" + excerpt(trim(text)) + "' is not a number (" + std::string(to_string(parsed.error)) +
                        "); ESI numbers are decimal or #x hex",
                    pos_of(site.element));
             return std::nullopt;
         }
         if (parsed.syntax == NumberSyntax::c_hex) {
             report(Severity::warning, "xml-hex-prefix",
-                   describe(site) + ": '" + std::string(trim(text)) + "' uses the C prefix 0x; ESI hex numbers are written #x",
+                   describe(site) + ": '" + excerpt(trim(text)) + "' uses the C prefix 0x; ESI hex numbers are written #x",
                    pos_of(site.element));
         }
         return parsed.value;
@@ -136,7 +136,7 @@ private:
         const auto b = parse_boolean(text);
         if (!b)
             report(Severity::error, "xml-boolean-format",
-                   describe(site) + ": '" + std::string(trim(text)) + "' is not a boolean (true, false, 1 or 0)", pos_of(site.element));
+                   describe(site) + ": '" + excerpt(trim(text)) + "' is not a boolean (true, false, 1 or 0)", pos_of(site.element));
         return b;
     }
     std::optional<bool> boolean(const pugi::xml_attribute a, const pugi::xml_node owner) { return boolean(a.value(), ValueSite{owner, a}); }
@@ -1129,14 +1129,30 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     // as written, for quoting lines and finding suppressions.
     std::string buffer = source->text();
     pugi::xml_document xml;
-    // No comments, processing instructions or declarations in the tree (for_children relies on
-    // it); text before an element's first child is stored in the element itself.
-    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata;
+    // No comments or processing instructions in the tree (for_children relies on it); text before
+    // an element's first child is stored in the element itself. A DOCTYPE is kept as a node (pugixml
+    // accepts one only before the root element, never inside it) so that it can be reported below.
+    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata | pugi::parse_doctype;
     const pugi::xml_parse_result parsed = xml.load_buffer_inplace(buffer.data(), buffer.size(), parse_options, pugi::encoding_utf8);
     if (!parsed) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", describe_parse_error(parsed), path,
                                    error_position(*source, parsed));
         return result;
+    }
+    // A DOCTYPE has no place in an ESI file (the ETG schema defines the format) and is the
+    // vehicle of entity-expansion bombs and external entities. It is never processed: entities
+    // are not expanded, external ones are never fetched, and references stay as written.
+    for (const pugi::xml_node n : xml.children()) {
+        if (n.type() != pugi::node_doctype) continue;
+        const std::string_view declaration = n.value();
+        std::size_t at = static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0));
+        if (const auto open = source->text().rfind("<!", at); open != std::string::npos) at = open;
+        const bool entities = declaration.find("<!ENTITY") != std::string_view::npos;
+        result.diagnostics.emplace(Severity::warning, "xml-doctype",
+                                   entities ? "the DOCTYPE declares entities; they are not expanded and external ones are not "
+                                              "fetched, so &name; references stay as written"
+                                            : "the DOCTYPE is ignored; ESI files are defined by the ETG schema, not a DTD",
+                                   path, source->position_of(at));
     }
     const pugi::xml_node root = xml.document_element();
     if (!root) {
@@ -1152,7 +1168,7 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     return result;
 }
 
-std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error) {
+std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
         error = "is a directory";
@@ -1163,13 +1179,20 @@ std::optional<std::string> read_file_bytes(const std::filesystem::path& path, st
         error = std::error_code(errno, std::generic_category()).message();
         return std::nullopt;
     }
+    auto too_large = [&] {
+        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+        std::fclose(file);
+        return std::nullopt;
+    };
     // A regular file is read into a buffer of its size in one call: growing the string chunk by
     // chunk copied a multi-MB file several times over and left up to twice its size allocated.
-    // Whatever the size did not cover (a file that grew, a pipe) is appended in chunks.
+    // Whatever the size did not cover (a file that grew, a pipe, a device) is appended in chunks,
+    // bounded by max_bytes like the announced size.
     std::string bytes;
     std::error_code size_error;
     const std::uintmax_t size = std::filesystem::file_size(path, size_error);
-    if (!size_error && size < std::numeric_limits<std::size_t>::max()) {
+    if (!size_error && size > max_bytes) return too_large();
+    if (!size_error) {
         bytes.resize(static_cast<std::size_t>(size));
         bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
     }
@@ -1177,6 +1200,7 @@ std::optional<std::string> read_file_bytes(const std::filesystem::path& path, st
     for (bool more = bytes.size() == size || size_error; more;) {
         const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
         bytes.append(buffer, n);
+        if (bytes.size() > max_bytes) return too_large();
         more = n == sizeof buffer;
     }
     const bool failed = std::ferror(file) != 0;

@@ -236,7 +236,8 @@ DeviceSource load_device_source_file(const std::filesystem::path& path, const De
                                 path.string(), SourcePos{});
         return out;
     }
-    const std::optional<std::string> bytes = read_file_bytes(path, error);
+    // Bounded while reading too: a path that is a pipe or a device announces no size.
+    const std::optional<std::string> bytes = read_file_bytes(path, error, options.max_bytes);
     if (!bytes) {
         DeviceSource out;
         out.diagnostics.emplace(Severity::error, "io-error", "cannot read file: " + error, path.string(), SourcePos{});

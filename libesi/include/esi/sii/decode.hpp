@@ -43,6 +43,17 @@ struct DecodedImage {
 // How many blank NOP categories (type 0, length 0) in a row end the walk.
 inline constexpr std::size_t blank_category_run_limit = 16;
 
+// How many categories the walk decodes before it stops with sii-too-many-categories. Real
+// images have a few dozen; without a bound an 8 MiB chain of empty categories decodes into two
+// million of them, and rendering those as JSON took 2.7 GB (docs/reliability.md).
+inline constexpr std::size_t max_categories = 1024;
+
+// How many payload bytes of typed categories (Strings, General, FMMU, SyncM, PDOs, DC) the walk
+// decodes into records; categories beyond it are kept as raw bytes (sii-decode-limit). Real
+// images have a few KiB of them; a 16 MiB image of PDO categories decodes into two million
+// entries, whose JSON dump took 3.5 GB and 84 s (docs/reliability.md).
+inline constexpr std::size_t max_decoded_payload_bytes = 64u << 10;
+
 [[nodiscard]] DecodedImage decode_image(std::span<const std::uint8_t> bytes);
 
 // Decoders for one category payload (exposed for unit tests). Faults get offsets relative to

@@ -74,6 +74,9 @@ inline constexpr std::uint16_t end = 0xFFFF;
 // "Strings", "General", "device specific", "vendor specific" ... for any code.
 [[nodiscard]] std::string_view category_name(std::uint16_t type);
 
+// A category's length word: at most 0xFFFF words of payload.
+inline constexpr std::size_t max_category_words = 0xFFFF;
+
 // Fixed record sizes in bytes.
 inline constexpr std::size_t general_bytes = 32;         // IgH rejects any other size
 inline constexpr std::size_t sync_manager_bytes = 8;

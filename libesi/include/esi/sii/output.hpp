@@ -43,6 +43,10 @@ struct HexParseResult {
 // True when the bytes look like Intel HEX (first non-blank character ':').
 [[nodiscard]] bool looks_like_intel_hex(std::string_view bytes);
 
+// The largest image read (binary, or the highest Intel HEX address): twice the 8 MiB word 0x3E
+// can describe, so that oversized dumps are still shown, and a bound on memory for any file.
+inline constexpr std::size_t max_image_bytes = 16u << 20;
+
 // An image as it arrives: raw binary, or Intel HEX (recognised by its leading ':').
 struct LoadedImage {
     std::optional<std::vector<std::uint8_t>> bytes;
