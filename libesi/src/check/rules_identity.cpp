@@ -219,7 +219,13 @@ void check_duplicate(const EsiDocument& document, RuleContext& context) {
 
 // ---- identity-1018-mismatch -----------------------------------------------------------------
 
-void check_1018(const EsiDocument& document, RuleContext& context) {
+// Sub-indices 1 and 2 name the device (vendor, product); sub-index 3 only its revision. A
+// revision default left at an older revision is the common case in large catalogues (a
+// dictionary shared across revisions; the firmware reports the real value at run time), so it
+// is a rule of its own with a lower severity than a foreign vendor id or product code.
+enum class IdentityPart { device, revision };
+
+void check_1018(const EsiDocument& document, RuleContext& context, IdentityPart part) {
     for (const auto& info : document.infos) {
         const std::optional<std::uint32_t> vendor_id = info.vendor ? info.vendor->id : std::nullopt;
         for (const auto& device : info.devices) {
@@ -240,7 +246,7 @@ void check_1018(const EsiDocument& document, RuleContext& context) {
                 {3, device.type.revision_no, "Type@RevisionNo", device.type.pos},
             };
             for (const auto& e : expected) {
-                if (!e.value) continue;
+                if (!e.value || (e.subindex == 3) != (part == IdentityPart::revision)) continue;
                 const ObjectEntry* entry = layout.entry(e.subindex);
                 if (!entry || entry->bit_size > 32) continue;
                 const std::optional<std::uint64_t> value = default_integer(*entry);
@@ -249,11 +255,19 @@ void check_1018(const EsiDocument& document, RuleContext& context) {
                 context.report(at,
                                device_label(device) + ": 0x1018:0" + std::to_string(e.subindex) + " (" + entry->name +
                                    ") defaults to " + hex32(*value) + " but " + e.what + " is " + hex32(*e.value) +
-                                   "; the identity object must repeat the description's identity",
+                                   (part == IdentityPart::revision ? "; a master or the conformance tool that compares the "
+                                                                 "identity object with the description reports a mismatch"
+                                                               : "; the identity object must repeat the description's identity"),
                                {context.note(e.where, std::string(e.what) + " is written here")});
             }
         }
     }
+}
+
+void check_1018_device(const EsiDocument& document, RuleContext& context) { check_1018(document, context, IdentityPart::device); }
+
+void check_1018_revision(const EsiDocument& document, RuleContext& context) {
+    check_1018(document, context, IdentityPart::revision);
 }
 
 // ---- identity-name-lcid-duplicate -----------------------------------------------------------
@@ -354,15 +368,26 @@ void add_identity(std::vector<Rule>& out) {
         "RevisionNo=\"#x10000\">EX-DIO-8-HD</Type>",
         &check_duplicate});
     out.push_back(Rule{
-        "identity-1018-mismatch", Severity::error, "0x1018 defaults disagree with Vendor/Id or Device/Type",
+        "identity-1018-mismatch", Severity::error, "0x1018 vendor id or product code defaults disagree with Vendor/Id or Device/Type",
         "The identity object 0x1018 (sub 1 vendor id, 2 product code, 3 revision) must report the same identity as "
         "the description and the SII; the conformance tool compares them (CTT TF-1300 4-1 'ESI OD Identity Info', "
         "TF-2301 0x1018). Defaults are read from DefaultValue or from DefaultData, which holds the bytes "
         "little-endian (\"02000000\" is 2). A copied dictionary that still carries the template's product code is the "
-        "usual cause (ETG sample ModulesSlots_CiA402; generator templates).",
+        "usual cause (ETG sample ModulesSlots_CiA402; generator templates). A stale revision is "
+        "identity-1018-revision-stale.",
         "<Type ProductCode=\"#x1001\" ...> ... <SubItem><Name>Product code</Name><Info><DefaultData>02100000</DefaultData>",
         "<Type ProductCode=\"#x1001\" ...> ... <SubItem><Name>Product code</Name><Info><DefaultData>01100000</DefaultData>",
-        &check_1018});
+        &check_1018_device});
+    out.push_back(Rule{
+        "identity-1018-revision-stale", Severity::warning, "0x1018:03 revision default differs from Device/Type@RevisionNo",
+        "0x1018:03 reports the revision the firmware runs; its default in the description should be the RevisionNo of "
+        "the Type it belongs to (CTT TF-1300 4-1 compares them). Catalogues that share one dictionary across revisions "
+        "often keep an older revision here: the master still matches the device by SII and Type, so this is a warning, "
+        "unlike a wrong vendor id or product code (identity-1018-mismatch). Seen in about 60 Beckhoff terminal "
+        "descriptions of the corpus.",
+        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\"> ... <SubItem><Name>Revision</Name><Info><DefaultValue>#x00020000</DefaultValue>",
+        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\"> ... <SubItem><Name>Revision</Name><Info><DefaultValue>#x00010000</DefaultValue>",
+        &check_1018_revision});
     out.push_back(Rule{
         "identity-name-lcid-duplicate", Severity::warning, "Two Names with the same LcId on one element",
         "Names are localized by LcId (default 1033, English); a tool shows one Name per language, so a second Name "

@@ -1,8 +1,9 @@
 // The output kinds of esi-gen. Each is a list of files rendered from templates or produced in
-// code; the SII image and other back ends join by adding an entry here.
+// code; other back ends join by adding an entry here.
 
 #include "esi/codegen/generate.hpp"
 #include "esi/xml/writer.hpp"
+#include "sii_output.hpp"
 
 namespace esi::codegen {
 
@@ -31,6 +32,8 @@ const std::vector<OutputKind>& output_kinds() {
           {"ecat_options.h", "soes_ecat_options.h.mustache", nullptr}}},
         {"structs", "packed C/C++ structs of the default RxPDO/TxPDO process images", OutputScope::device,
          {{"process_image.h", "process_image.h.mustache", nullptr}}},
+        {"sii", "SII EEPROM image of the device, raw binary and Intel HEX (as esi-sii build)", OutputScope::device,
+         {{"eeprom.bin", "", &produce_sii_binary}, {"eeprom.hex", "", &produce_sii_intel_hex}}},
     };
     return kinds;
 }

@@ -193,6 +193,20 @@ std::optional<ObjectSubItemInfo> SourceParser::info_sub_item(const Node& node) {
     return s;
 }
 
+// An enum value's text: `1: On`, or `1: {text: On, comment: ...}`. False when the mapping form
+// is broken (already reported).
+bool SourceParser::enum_texts(const Node& value, EnumValue& ev) {
+    if (!value.IsMap()) {
+        ev.texts = r_.names(value, "enum text");
+        return true;
+    }
+    const auto ef = r_.mapping(value, Context::enum_value, "an enum value");
+    if (!ef) return false;
+    ev.texts = names_of(*ef, "text");
+    ev.comments = names_of(*ef, "comment");
+    return true;
+}
+
 std::optional<DataType> SourceParser::data_type(const Node& node) {
     const auto f = r_.mapping(node, Context::data_type, "a data type");
     if (!f) return std::nullopt;
@@ -264,14 +278,7 @@ std::optional<DataType> SourceParser::data_type(const Node& node) {
                 EnumValue ev;
                 ev.pos = pos_of(it->first);
                 ev.value = r_.number(it->first, "enum value").value_or(Number{});
-                if (it->second.IsMap()) {
-                    const auto ef = r_.mapping(it->second, Context::enum_value, "an enum value");
-                    if (!ef) continue;
-                    ev.texts = names_of(*ef, "text");
-                    ev.comments = names_of(*ef, "comment");
-                } else {
-                    ev.texts = r_.names(it->second, "enum text");
-                }
+                if (!enum_texts(it->second, ev)) continue;
                 t.enums.push_back(std::move(ev));
             }
         }
@@ -462,14 +469,7 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
                 EnumValue ev;
                 ev.pos = pos_of(it->first);
                 if (auto v = typed_integer(it->first, dictionary, type, "enum value")) ev.value = *v;
-                if (it->second.IsMap()) {
-                    const auto ef = r_.mapping(it->second, Context::enum_value, "an enum value");
-                    if (!ef) continue;
-                    ev.texts = names_of(*ef, "text");
-                    ev.comments = names_of(*ef, "comment");
-                } else {
-                    ev.texts = r_.names(it->second, "enum text");
-                }
+                if (!enum_texts(it->second, ev)) continue;
                 t.enums.push_back(std::move(ev));
             }
             dictionary.data_types.push_back(std::move(t));

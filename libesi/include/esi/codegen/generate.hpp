@@ -9,6 +9,7 @@
 //   c        stack-neutral C99 slave tables (OD, PDO mapping/assignment, SM and ESC config)
 //   soes     SOES object list, utypes.h and ecat_options.h
 //   structs  packed C/C++ structs of the default RxPDO/TxPDO process images
+//   sii      the SII EEPROM image (eeprom.bin, eeprom.hex), as esi-sii build writes it
 // Per-device kinds go straight into the output directory when the document yields one device,
 // else into one sub-directory per device, named after the device's c_name.
 
@@ -27,7 +28,7 @@ namespace esi::codegen {
 enum class OutputScope { document, device };
 
 struct ProduceContext;
-// Produces one file in code rather than from a template (e.g. ESI XML; later the SII image).
+// Produces one file in code rather than from a template (ESI XML, the SII image).
 using Producer = Diagnostics (*)(const ProduceContext& context, std::string& content);
 
 struct OutputArtifact {
