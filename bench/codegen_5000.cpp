@@ -4,6 +4,9 @@
 // each stage; the target for the whole run is under 200 ms on one core (issue 3, section 5).
 //
 //   ./build/bench/codegen_5000 [iterations]
+//   ./build/bench/codegen_5000 --once    one generation of every output and nothing else, for
+//                                        valgrind --tool=callgrind (instruction counts are steadier
+//                                        than times on a loaded machine)
 
 #include <algorithm>
 #include <chrono>
@@ -152,12 +155,22 @@ double median(std::vector<double> v) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    const int iterations = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+    const bool once = argc > 1 && std::string(argv[1]) == "--once";
+    const int iterations = argc > 1 && !once ? std::max(1, std::atoi(argv[1])) : 5;
     const esi::EsiDocument doc = synthetic_document(5000);
 
     esi::codegen::GenerateOptions options;
     options.output_dir = "out";
     options.template_dirs = esi::codegen::template_search_path({}, std::nullopt);
+
+    if (once) {
+        const auto result = esi::codegen::generate_outputs(doc, options);
+        std::size_t bytes = 0;
+        for (const auto& f : result.files) bytes += f.content.size();
+        std::printf("codegen_5000 --once: %zu files, %zu bytes, %zu errors\n", result.files.size(), bytes,
+                    result.diagnostics.count(esi::Severity::error));
+        return result.diagnostics.has_errors() ? 1 : 0;
+    }
 
     std::vector<double> view_ms, total_ms, view_cpu, total_cpu;
     std::size_t bytes = 0, files = 0, errors = 0;

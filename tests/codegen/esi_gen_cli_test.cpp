@@ -63,6 +63,17 @@ TEST(EsiGenCli, BrokenTemplateWritesNothingAndPointsIntoTheTemplate) {
     EXPECT_TRUE(tc::tree(out).empty());  // not even the outputs whose templates were fine
 }
 
+TEST(EsiGenCli, PartialsInATemplateAreAnErrorAtTheTag) {
+    TempDir dir;
+    const auto templates = dir.path() / "templates";
+    write_text(templates / "soes_utypes.h.mustache", "/* utypes */\n{{#device}}\n  {{> member}}\n{{/device}}\n");
+    const auto out = dir.path() / "out";
+    const auto r = tc::esi_gen(tc::sample_esi(), out, {"--only", "soes", "--templates", templates.string()});
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("soes_utypes.h.mustache:3:3: error: partials are not supported"), std::string::npos) << r.err;
+    EXPECT_TRUE(tc::tree(out).empty());
+}
+
 TEST(EsiGenCli, TemplatesDirOverridesOneTemplateAndKeepsTheOthers) {
     TempDir dir;
     const auto templates = dir.path() / "templates";

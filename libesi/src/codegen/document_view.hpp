@@ -1,7 +1,8 @@
 #pragma once
 // The view of a whole document, kept apart per device so that per-device templates can render
-// each device without copying the others.
+// each device without the others.
 
+#include <memory>
 #include <vector>
 
 #include "codegen/view_parts.hpp"
@@ -13,11 +14,12 @@ struct DeviceViewEntry {
     const EtherCATInfo* info = nullptr;
     const Device* device = nullptr;
     std::string c_name;
-    Json view;
+    ViewValue view;  // in the DocumentView's arena
 };
 
 struct DocumentView {
-    Json root;  // view_version, generator, source_file, vendor (no devices)
+    std::unique_ptr<ViewArena> arena = std::make_unique<ViewArena>();  // holds every value below
+    ViewValue root;  // view_version, generator, source_file, vendor (no devices)
     std::vector<DeviceViewEntry> devices;
     Diagnostics diagnostics;
 };
@@ -28,9 +30,9 @@ struct DocumentView {
 [[nodiscard]] DocumentView build_document_view(const EsiDocument& document, const ViewOptions& options);
 
 // The document view as --dump-model prints it: the root fields plus "devices".
-[[nodiscard]] Json document_json(const DocumentView& view);
+[[nodiscard]] ViewValue document_value(DocumentView& view);
 
-// What a per-device template sees: the root fields plus "device" (taken from `device`).
-[[nodiscard]] Json device_context(const DocumentView& view, DeviceViewEntry&& device);
+// What a per-device template sees: the root fields plus "device".
+[[nodiscard]] ViewValue device_context(DocumentView& view, const DeviceViewEntry& device);
 
 }  // namespace esi::codegen

@@ -4,7 +4,7 @@
 #include <system_error>
 
 #include "codegen/document_view.hpp"
-#include "codegen/mustache_context.hpp"
+#include "codegen/mustache.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/text_distance.hpp"
 #include "esi/xml/reader.hpp"
@@ -134,7 +134,7 @@ GenerateResult generate_outputs(const EsiDocument& document, const GenerateOptio
     Plan plan = make_plan(document, options, result.diagnostics);
     if (result.diagnostics.has_errors()) return result;
 
-    // The view is built once; each device's mustache data once for all its templates.
+    // The view is built once; each template is parsed once and rendered for every device.
     DocumentView view;
     bool need_view = false;
     for (const auto& file : plan.files) need_view = need_view || !file.template_name.empty();
@@ -144,9 +144,15 @@ GenerateResult generate_outputs(const EsiDocument& document, const GenerateOptio
         view.diagnostics = {};
     }
 
-    std::map<std::string, std::pair<fs::path, std::string>> templates;  // name -> (path, text)
-    auto load_template = [&](const std::string& name) -> const std::pair<fs::path, std::string>* {
-        if (auto it = templates.find(name); it != templates.end()) return &it->second;
+    struct LoadedTemplate {
+        fs::path path;
+        std::optional<mustache::Template> parsed;  // absent when it could not be read or parsed
+        std::size_t last_size = 0;                  // output size of the previous rendering
+    };
+    std::map<std::string, LoadedTemplate> templates;
+    auto load_template = [&](const std::string& name) -> LoadedTemplate* {
+        if (auto it = templates.find(name); it != templates.end()) return it->second.parsed ? &it->second : nullptr;
+        LoadedTemplate& loaded = templates[name];
         const auto path = find_template(name, options.template_dirs);
         if (!path) {
             std::string searched;
@@ -156,16 +162,23 @@ GenerateResult generate_outputs(const EsiDocument& document, const GenerateOptio
                                        "", {});
             return nullptr;
         }
+        loaded.path = *path;
         std::string error;
-        auto text = read_file_bytes(*path, error);
+        const auto text = read_file_bytes(*path, error);
         if (!text) {
             result.diagnostics.emplace(Severity::error, "io-error", error, path->string(), {});
             return nullptr;
         }
-        return &templates.emplace(name, std::make_pair(*path, std::move(*text))).first->second;
+        mustache::ParseResult parsed = mustache::parse(*text);
+        if (!parsed.parsed) {
+            result.diagnostics.emplace(Severity::error, "codegen-template-error", parsed.error, path->string(), parsed.pos);
+            return nullptr;
+        }
+        loaded.parsed = std::move(parsed.parsed);
+        return &loaded;
     };
 
-    std::unique_ptr<MustacheContext> context;
+    ViewValue context;
     const DeviceViewEntry* context_device = nullptr;
     for (std::size_t k = 0; k < plan.files.size(); ++k) {
         const PlannedFile& file = plan.files[k];
@@ -177,23 +190,21 @@ GenerateResult generate_outputs(const EsiDocument& document, const GenerateOptio
             result.files.push_back(std::move(out));
             continue;
         }
-        const auto* tmpl = load_template(file.template_name);
+        LoadedTemplate* tmpl = load_template(file.template_name);
         if (!tmpl) continue;
-        DeviceViewEntry* device = nullptr;
-        for (auto& d : view.devices)
+        const DeviceViewEntry* device = nullptr;
+        for (const auto& d : view.devices)
             if (planned_device && d.device == planned_device->device) device = &d;
         if (!device) continue;
         if (device != context_device) {
-            // Each device's view is used once: it moves into its context instead of being copied.
-            context = std::make_unique<MustacheContext>(device_context(view, std::move(*device)));
+            context = device_context(view, *device);
             context_device = device;
         }
-        Rendered rendered = context->render(tmpl->second);
-        if (!rendered.ok) {
-            result.diagnostics.emplace(Severity::error, "codegen-template-error", rendered.error, tmpl->first.string(), rendered.pos);
-            continue;
-        }
-        result.files.push_back({file.path, std::move(rendered.text)});
+        OutputFile out{file.path, {}};
+        out.content.reserve(tmpl->last_size + tmpl->last_size / 8);
+        tmpl->parsed->render(context, out.content);
+        tmpl->last_size = out.content.size();
+        result.files.push_back(std::move(out));
     }
     if (result.diagnostics.has_errors()) result.files.clear();
     return result;

@@ -26,13 +26,16 @@ std::vector<DeviceViewEntry> selected_devices(const EsiDocument& document, const
 
 DocumentView build_document_view(const EsiDocument& document, const ViewOptions& options) {
     DocumentView out;
-    ViewContext context{document.path, &out.diagnostics};
+    ViewArena& arena = *out.arena;
+    ViewContext context{document.path, &out.diagnostics, &arena};
 
-    out.root["view_version"] = model_view_version;
-    out.root["generator"] = "esi-gen";
+    ObjectBuilder root(arena);
+    root.add("view_version", model_view_version);
+    root.add("generator", ViewValue::of_static("esi-gen"));
     // The file name only: the same source gives the same output wherever it is checked out.
-    out.root["source_file"] = std::filesystem::path(document.path).filename().string();
-    out.root["vendor"] = document.infos.empty() ? vendor_view(EtherCATInfo{}) : vendor_view(document.infos.front());
+    root.add("source_file", std::filesystem::path(document.path).filename().string());
+    root.add("vendor", document.infos.empty() ? vendor_view(EtherCATInfo{}, arena) : vendor_view(document.infos.front(), arena));
+    out.root = root.finish();
 
     out.devices = selected_devices(document, options);
     for (auto& entry : out.devices) {
@@ -47,26 +50,28 @@ DocumentView build_document_view(const EsiDocument& document, const ViewOptions&
     return out;
 }
 
-Json document_json(const DocumentView& view) {
-    Json j = view.root;
-    j["device_count"] = view.devices.size();
-    Json devices = Json::array();
-    for (const auto& d : view.devices) devices.push_back(d.view);
-    j["devices"] = std::move(devices);
-    return j;
+ViewValue document_value(DocumentView& view) {
+    ObjectBuilder j(*view.arena);
+    j.add_members_of(view.root);
+    j.add("device_count", view.devices.size());
+    ListBuilder devices(*view.arena);
+    for (const auto& d : view.devices) devices.add(d.view);
+    j.add("devices", devices.finish());
+    return j.finish();
 }
 
-Json device_context(const DocumentView& view, DeviceViewEntry&& device) {
-    Json j = view.root;
-    j["device"] = std::move(device.view);
-    return j;
+ViewValue device_context(DocumentView& view, const DeviceViewEntry& device) {
+    ObjectBuilder j(*view.arena);
+    j.add_members_of(view.root);
+    j.add("device", device.view);
+    return j.finish();
 }
 
 ModelViewText model_view_json(const EsiDocument& document, const ViewOptions& options) {
     DocumentView view = build_document_view(document, options);
     ModelViewText out;
     // Strings from DefaultData may hold any bytes: invalid UTF-8 is replaced, never thrown about.
-    out.json = document_json(view).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+    out.json = to_json(document_value(view)).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
     out.diagnostics = std::move(view.diagnostics);
     return out;
 }

@@ -53,20 +53,21 @@ unsigned state_bits(const std::optional<std::string>& restrictions, unsigned pre
 }
 
 struct Access {
-    std::string text = "ro";  // an absent Access element reads as ro
+    std::string_view text = "ro";  // an absent Access element reads as ro
     unsigned word = 0;
     bool readable = true;
     bool writable = false;
     bool rx = false;
     bool tx = false;
-    std::string pdo_mapping;
+    std::string_view pdo_mapping;  // "", "R", "T" or "RT"
 };
 
 Access access_of(const ObjectFlags* flags) {
     Access a;
     if (flags && flags->access) {
         const std::string t = lower(trim(*flags->access));
-        if (t == "rw" || t == "wo") a.text = t;
+        if (t == "rw") a.text = "rw";
+        else if (t == "wo") a.text = "wo";
     }
     a.readable = a.text != "wo";
     a.writable = a.text != "ro";
@@ -78,8 +79,7 @@ Access access_of(const ObjectFlags* flags) {
         const std::string m = lower(trim(*flags->pdo_mapping));
         a.rx = m.find('r') != std::string::npos;
         a.tx = m.find('t') != std::string::npos;
-        if (a.rx) a.pdo_mapping += 'R';
-        if (a.tx) a.pdo_mapping += 'T';
+        a.pdo_mapping = a.rx && a.tx ? "RT" : a.rx ? "R" : a.tx ? "T" : "";
     }
     if (a.rx) a.word |= rx_mappable_bit;
     if (a.tx) a.word |= tx_mappable_bit;
@@ -117,42 +117,44 @@ std::string soes_access(unsigned word) {
 // The DTYPE_* constant SOES defines for a CoE data type. BYTE/WORD/DWORD are given as the unsigned
 // type of the same size because SOES's value and PDO handling (COE_setValue, COE_pdoPack) only
 // switch over the codes it defines; other codes are given as numbers.
-std::string soes_datatype(const BasicType* basic) {
-    if (!basic) return "DTYPE_OCTET_STRING";
+ViewValue soes_datatype(const BasicType* basic, ViewArena& arena) {
+    const auto name = [](std::string_view text) { return ViewValue::of_static(text); };
+    if (!basic) return name("DTYPE_OCTET_STRING");
     switch (basic->coe_code) {
-        case 0x0001: return "DTYPE_BOOLEAN";
-        case 0x0002: return "DTYPE_INTEGER8";
-        case 0x0003: return "DTYPE_INTEGER16";
-        case 0x0004: return "DTYPE_INTEGER32";
-        case 0x0005: case 0x001E: return "DTYPE_UNSIGNED8";
-        case 0x0006: case 0x001F: return "DTYPE_UNSIGNED16";
-        case 0x0007: case 0x0020: return "DTYPE_UNSIGNED32";
-        case 0x0008: return "DTYPE_REAL32";
-        case 0x0009: return "DTYPE_VISIBLE_STRING";
-        case 0x000A: return "DTYPE_OCTET_STRING";
-        case 0x000B: return "DTYPE_UNICODE_STRING";
-        case 0x0010: return "DTYPE_INTEGER24";
-        case 0x0011: return "DTYPE_REAL64";
-        case 0x0015: return "DTYPE_INTEGER64";
-        case 0x0016: return "DTYPE_UNSIGNED24";
-        case 0x001B: return "DTYPE_UNSIGNED64";
-        case 0x002D: return "DTYPE_BITARR8";
-        case 0x002E: return "DTYPE_BITARR16";
-        case 0x002F: return "DTYPE_BITARR32";
+        case 0x0001: return name("DTYPE_BOOLEAN");
+        case 0x0002: return name("DTYPE_INTEGER8");
+        case 0x0003: return name("DTYPE_INTEGER16");
+        case 0x0004: return name("DTYPE_INTEGER32");
+        case 0x0005: case 0x001E: return name("DTYPE_UNSIGNED8");
+        case 0x0006: case 0x001F: return name("DTYPE_UNSIGNED16");
+        case 0x0007: case 0x0020: return name("DTYPE_UNSIGNED32");
+        case 0x0008: return name("DTYPE_REAL32");
+        case 0x0009: return name("DTYPE_VISIBLE_STRING");
+        case 0x000A: return name("DTYPE_OCTET_STRING");
+        case 0x000B: return name("DTYPE_UNICODE_STRING");
+        case 0x0010: return name("DTYPE_INTEGER24");
+        case 0x0011: return name("DTYPE_REAL64");
+        case 0x0015: return name("DTYPE_INTEGER64");
+        case 0x0016: return name("DTYPE_UNSIGNED24");
+        case 0x001B: return name("DTYPE_UNSIGNED64");
+        case 0x002D: return name("DTYPE_BITARR8");
+        case 0x002E: return name("DTYPE_BITARR16");
+        case 0x002F: return name("DTYPE_BITARR32");
         default: break;
     }
-    if (basic->coe_code >= 0x0030 && basic->coe_code <= 0x0037) return "DTYPE_BIT" + std::to_string(basic->coe_code - 0x002F);
-    return hex(basic->coe_code, 4);
+    if (basic->coe_code >= 0x0030 && basic->coe_code <= 0x0037) return arena.string("DTYPE_BIT" + std::to_string(basic->coe_code - 0x002F));
+    return arena.string(hex_text(basic->coe_code, 4));
 }
 
 }  // namespace
 
 CType c_type_of(const BasicType* basic, std::uint64_t bit_size) {
     const std::uint64_t bytes = (bit_size + 7) / 8;
-    auto width = [](std::uint64_t bits, bool is_signed) {
-        const char* prefix = is_signed ? "int" : "uint";
-        const std::uint64_t w = bits <= 8 ? 8 : bits <= 16 ? 16 : bits <= 32 ? 32 : 64;
-        return std::string(prefix) + std::to_string(w) + "_t";
+    auto width = [](std::uint64_t bits, bool is_signed) -> std::string_view {
+        static constexpr std::string_view names[2][4] = {{"uint8_t", "uint16_t", "uint32_t", "uint64_t"},
+                                                         {"int8_t", "int16_t", "int32_t", "int64_t"}};
+        const int w = bits <= 8 ? 0 : bits <= 16 ? 1 : bits <= 32 ? 2 : 3;
+        return names[is_signed ? 1 : 0][w];
     };
     if (!basic) return {"uint8_t", std::max<std::uint64_t>(bytes, 1)};
     switch (basic->type_class) {
@@ -176,7 +178,7 @@ CType c_type_of(const BasicType* basic, std::uint64_t bit_size) {
 
 namespace {
 
-std::string value_class_name(const BasicType* basic) {
+std::string_view value_class_name(const BasicType* basic) {
     if (!basic) return "other";
     switch (basic->type_class) {
         case TypeClass::boolean: return "boolean";
@@ -206,9 +208,11 @@ struct EntryInput {
 };
 
 // `object_member` is the object's member in SOES's Obj (empty for a VAR, whose single entry is the
-// member itself and carries the object's C name, `var_c_name`).
-Json entry_view(const EntryInput& input, ObjectCode code, std::uint64_t max_subindex, const std::string& object_member,
-                const std::string& var_c_name, IdentifierScope& scope, std::size_t position) {
+// member itself and carries the object's C name, `var_c_name`). Returns whether the entry lives in
+// SOES's Obj.
+bool add_entry_view(ListBuilder& list, const EntryInput& input, ObjectCode code, std::uint64_t max_subindex, const std::string& object_member,
+                    const std::string& var_c_name, IdentifierScope& scope, std::size_t position) {
+    ViewArena& arena = list.arena();
     const ObjectEntry& e = input.entry;
     const BasicType* basic = basic_of(e);
     const Access access = access_of(e.flags);
@@ -220,51 +224,53 @@ Json entry_view(const EntryInput& input, ObjectCode code, std::uint64_t max_subi
         values.default_value.i = static_cast<std::int64_t>(max_subindex);
     }
     const std::string name = e.name.empty() ? "SubIndex " + std::to_string(e.subindex) : e.name;
-    char sub_hex2[8];
-    std::snprintf(sub_hex2, sizeof sub_hex2, "%02X", e.subindex);
-    const std::string c_name =
-        code == ObjectCode::var ? var_c_name : scope.claim(c_identifier(name, "subindex_" + std::string(sub_hex2)), sub_hex2);
+    const ShortText sub_hex2 = plain_hex_text(e.subindex, 2);
+    const std::string c_name = code == ObjectCode::var
+                                   ? var_c_name
+                                   : scope.claim(c_identifier(name, "subindex_" + sub_hex2.str()), std::string_view(sub_hex2));
     const CType ct = c_type_of(basic, e.bit_size);
+    const std::string_view type_name = trim(e.type);
 
-    Json j;
-    j["position"] = position;
-    j["subindex"] = e.subindex;
-    j["subindex_hex"] = hex(e.subindex, 2);
-    j["subindex_hex2"] = sub_hex2;
-    j["name"] = name;
-    j["c_name"] = c_name;
-    j["name_literal"] = c_string_literal(name);
-    j["comment"] = c_comment_text(name);
-    j["synthesized"] = input.synthesized;
-    j["data_type"] = basic ? std::string(basic->esi_name) : std::string(trim(e.type));
-    j["data_type_literal"] = c_string_literal(j["data_type"].get<std::string>());
-    j["type_name"] = std::string(trim(e.type));
-    j["coe_name"] = basic ? std::string(basic->coe_name) : std::string();
-    j["coe_code"] = basic ? basic->coe_code : 0;
-    j["coe_code_hex"] = hex(basic ? basic->coe_code : 0, 4);
-    j["value_class"] = value_class_name(basic);
-    j["bit_length"] = e.bit_size;
-    j["bit_offset"] = e.bit_offset;
-    j["byte_length"] = (e.bit_size + 7) / 8;
-    j["c_type"] = ct.type;
-    j["is_c_array"] = ct.array_length != 0;
-    j["c_array_length"] = ct.array_length;
-    j["c_array_suffix"] = ct.array_length ? "[" + std::to_string(ct.array_length) + "]" : std::string();
-    j["access"] = access.text;
-    j["readable"] = access.readable;
-    j["writable"] = access.writable;
-    j["read_restrictions"] = e.flags && e.flags->access_read_restrictions ? *e.flags->access_read_restrictions : "";
-    j["write_restrictions"] = e.flags && e.flags->access_write_restrictions ? *e.flags->access_write_restrictions : "";
-    j["access_word"] = access.word;
-    j["access_word_hex"] = hex(access.word, 4);
-    j["pdo_mapping"] = access.pdo_mapping;
-    j["rx_mappable"] = access.rx;
-    j["tx_mappable"] = access.tx;
-    j["pdo_mappable"] = access.rx || access.tx;
-    j["mapped_in_pdo"] = input.mapped;
-    j["default"] = value_view(values.default_value, e.bit_size);
-    j["min"] = value_view(values.min, e.bit_size);
-    j["max"] = value_view(values.max, e.bit_size);
+    ObjectBuilder j(arena);
+    j.add("position", position);
+    j.add("subindex", e.subindex);
+    j.add("subindex_hex", hex_text(e.subindex, 2));
+    j.add("subindex_hex2", sub_hex2);
+    j.add("name", name);
+    j.add("c_name", c_name);
+    j.add("name_literal", c_string_literal(name));
+    j.add("comment", c_comment_text(name));
+    j.add("synthesized", input.synthesized);
+    const std::string_view data_type = basic ? basic->esi_name : type_name;
+    j.add("data_type", basic ? ViewValue::of_static(data_type) : arena.string(data_type));
+    j.add("data_type_literal", c_string_literal(data_type));
+    j.add("type_name", type_name);
+    j.add("coe_name", ViewValue::of_static(basic ? basic->coe_name : std::string_view()));
+    j.add("coe_code", basic ? basic->coe_code : 0);
+    j.add("coe_code_hex", hex_text(basic ? basic->coe_code : 0, 4));
+    j.add("value_class", ViewValue::of_static(value_class_name(basic)));
+    j.add("bit_length", e.bit_size);
+    j.add("bit_offset", e.bit_offset);
+    j.add("byte_length", (e.bit_size + 7) / 8);
+    j.add("c_type", ViewValue::of_static(ct.type));
+    j.add("is_c_array", ct.array_length != 0);
+    j.add("c_array_length", ct.array_length);
+    j.add("c_array_suffix", ct.array_length ? arena.string("[" + std::to_string(ct.array_length) + "]") : ViewValue::of_static(""));
+    j.add("access", ViewValue::of_static(access.text));
+    j.add("readable", access.readable);
+    j.add("writable", access.writable);
+    j.add("read_restrictions", e.flags && e.flags->access_read_restrictions ? arena.string(*e.flags->access_read_restrictions) : ViewValue::of_static(""));
+    j.add("write_restrictions", e.flags && e.flags->access_write_restrictions ? arena.string(*e.flags->access_write_restrictions) : ViewValue::of_static(""));
+    j.add("access_word", access.word);
+    j.add("access_word_hex", hex_text(access.word, 4));
+    j.add("pdo_mapping", ViewValue::of_static(access.pdo_mapping));
+    j.add("rx_mappable", access.rx);
+    j.add("tx_mappable", access.tx);
+    j.add("pdo_mappable", access.rx || access.tx);
+    j.add("mapped_in_pdo", input.mapped);
+    j.add("default", value_view(arena, values.default_value, e.bit_size));
+    j.add("min", value_view(arena, values.min, e.bit_size));
+    j.add("max", value_view(arena, values.max, e.bit_size));
 
     // SOES (soes/esc_coe.h _objd): entries that the master may write or that travel in a PDO live in
     // the application's `Obj` structure (utypes.h); the others are constants in the object list.
@@ -273,33 +279,37 @@ Json entry_view(const EntryInput& input, ObjectCode code, std::uint64_t max_subi
     // Mapped entries need a variable even when the file forgot their PdoMapping flag.
     const bool stored = access.writable || ((access.rx || access.tx || input.mapped) && !count_entry);
     const std::string member = object_member.empty() ? c_name : object_member + "." + c_name;
-    Json soes;
-    soes["datatype"] = soes_datatype(basic);
-    soes["access"] = soes_access(access.word);
-    soes["stored"] = stored;
-    soes["member"] = stored ? member : std::string();
-    std::string data = "NULL";
-    if (stored) data = is_text ? "Obj." + member : "&Obj." + member;
+    ObjectBuilder soes(arena);
+    soes.add("datatype", soes_datatype(basic, arena));
+    soes.add("access", soes_access(access.word));
+    soes.add("stored", stored);
+    soes.add("member", stored ? arena.string(member) : ViewValue::of_static(""));
+    ViewValue data = ViewValue::of_static("NULL");
+    if (stored) data = arena.string((is_text ? "Obj." : "&Obj.") + member);
     else if (is_text && values.default_value.kind != DecodedValue::Kind::none)
-        data = c_string_literal(values.default_value.text);
-    soes["data"] = data;
-    const Json& def = j["default"];
-    const bool numeric_default = !is_text && def["present"].get<bool>();
+        data = arena.string(c_string_literal(values.default_value.text));
+    soes.add("data", data);
+    const bool numeric_default = !is_text && values.default_value.kind != DecodedValue::Kind::none;
     // SOES keeps defaults in a 32-bit field (and zero-extends it into 64-bit variables), so a
     // default that does not fit is given as 0 and flagged for the application to set.
-    const bool fits = numeric_default && def["fits_32_bits"].get<bool>();
-    soes["value"] = fits ? def["bits32_hex"].get<std::string>() : std::string("0");
-    soes["value_truncated"] = numeric_default && !fits;
-    j["soes"] = std::move(soes);
-    return j;
+    const bool fits = numeric_default && fits_32_bits(values.default_value);
+    soes.add("value", fits ? arena.string(bits32_hex(values.default_value, e.bit_size)) : ViewValue::of_static("0"));
+    soes.add("value_truncated", numeric_default && !fits);
+    j.add("soes", soes.finish());
+    list.add(j.finish());
+    return stored;
 }
 
 }  // namespace
 
 ObjectsView objects_view(const Device& device, const ViewContext& context) {
     ObjectsView out;
+    ViewArena& arena = *context.arena;
     const Dictionary* dictionary = device.dictionary();
-    if (!dictionary) return out;
+    if (!dictionary) {
+        out.objects = ListBuilder(arena).finish();
+        return out;
+    }
 
     std::vector<const Object*> objects;
     objects.reserve(dictionary->objects.size());
@@ -328,11 +338,12 @@ ObjectsView objects_view(const Device& device, const ViewContext& context) {
     for (const std::size_t k : naming_order) {
         const Object& object = *objects[k];
         if (k > 0 && objects[k - 1]->index == object.index) continue;  // a duplicate, skipped below
-        char index_hex4[8];
-        std::snprintf(index_hex4, sizeof index_hex4, "%04X", object.index);
-        object_names[k] = object_scope.claim(c_identifier(primary_text(object.names), "object_" + std::string(index_hex4)), lower(index_hex4));
+        const ShortText index_hex4 = plain_hex_text(object.index, 4);
+        object_names[k] = object_scope.claim(c_identifier(primary_text(object.names), "object_" + index_hex4.str()), lower(index_hex4));
     }
 
+    ListBuilder object_list(arena);
+    std::vector<EntryInput> entries;
     std::size_t position = 0;
     for (std::size_t k = 0; k < objects.size(); ++k) {
         const Object& object = *objects[k];
@@ -340,13 +351,14 @@ ObjectsView objects_view(const Device& device, const ViewContext& context) {
             context.warn("codegen-duplicate-object", "object " + hex(object.index, 4) + " is defined twice; the first definition is generated", object.pos);
             continue;
         }
-        const ObjectLayout layout = layout_of(dictionary, object);
+        ObjectLayout layout = layout_of(dictionary, object);
 
-        std::vector<EntryInput> entries;
+        entries.clear();
         entries.reserve(layout.entries.size() + 1);
-        for (const auto& e : layout.entries) {
+        for (auto& e : layout.entries) {
             if (e.subindex > 255) continue;
-            entries.push_back({e, false, mapped.count({object.index, e.subindex}) != 0});
+            const bool is_mapped = mapped.count({object.index, e.subindex}) != 0;
+            entries.push_back({std::move(e), false, is_mapped});
         }
         std::stable_sort(entries.begin(), entries.end(), [](const EntryInput& a, const EntryInput& b) { return a.entry.subindex < b.entry.subindex; });
         for (std::size_t m = 1; m < entries.size();) {
@@ -370,48 +382,50 @@ ObjectsView objects_view(const Device& device, const ViewContext& context) {
             count.entry.basic = find_basic_type("USINT");
             count.entry.bit_size = 8;
             count.entry.flags = object.flags ? &*object.flags : nullptr;
-            entries.insert(entries.begin(), count);
+            entries.insert(entries.begin(), std::move(count));
         }
 
         const std::string name = primary_text(object.names);
-        char index_hex4[8];
-        std::snprintf(index_hex4, sizeof index_hex4, "%04X", object.index);
         const std::string& c_name = object_names[k];
 
-        Json o;
-        o["index"] = object.index;
-        o["index_hex"] = hex(object.index, 4);
-        o["index_hex4"] = index_hex4;
-        o["name"] = name;
-        o["c_name"] = c_name;
-        o["name_literal"] = c_string_literal(name);
-        o["comment"] = c_comment_text(name);
-        o["object_code"] = std::string(to_string(layout.code));
-        o["object_code_value"] = layout.code == ObjectCode::var ? 7 : layout.code == ObjectCode::array ? 8 : 9;
-        o["is_var"] = layout.code == ObjectCode::var;
-        o["is_array"] = layout.code == ObjectCode::array;
-        o["is_record"] = layout.code == ObjectCode::record;
-        o["type_name"] = std::string(trim(object.type));
-        o["bit_size"] = object.bit_size;
-        o["category"] = object.flags && object.flags->category ? *object.flags->category : "";
-        o["max_subindex"] = layout.code == ObjectCode::var ? 0 : max_subindex;
-        o["first_entry"] = position;
-        o["entry_count"] = entries.size();
+        ObjectBuilder o(arena);
+        o.add("index", object.index);
+        o.add("index_hex", hex_text(object.index, 4));
+        o.add("index_hex4", plain_hex_text(object.index, 4));
+        o.add("name", name);
+        o.add("c_name", c_name);
+        o.add("name_literal", c_string_literal(name));
+        o.add("comment", c_comment_text(name));
+        o.add("object_code", ViewValue::of_static(to_string(layout.code)));
+        o.add("object_code_value", layout.code == ObjectCode::var ? 7 : layout.code == ObjectCode::array ? 8 : 9);
+        o.add("is_var", layout.code == ObjectCode::var);
+        o.add("is_array", layout.code == ObjectCode::array);
+        o.add("is_record", layout.code == ObjectCode::record);
+        o.add("type_name", trim(object.type));
+        o.add("bit_size", object.bit_size);
+        o.add("category", object.flags && object.flags->category ? arena.string(*object.flags->category) : ViewValue::of_static(""));
+        o.add("max_subindex", layout.code == ObjectCode::var ? 0 : max_subindex);
+        o.add("first_entry", position);
+        o.add("entry_count", entries.size());
 
         IdentifierScope entry_scope;
         const std::string member = layout.code == ObjectCode::var ? std::string() : c_name;
-        Json list = Json::array();
+        ListBuilder list(arena);
         bool stored = false;
         for (const auto& input : entries) {
-            Json entry = entry_view(input, layout.code, max_subindex, member, c_name, entry_scope, position);
-            stored = stored || entry["soes"]["stored"].get<bool>();
-            list.push_back(std::move(entry));
+            stored = add_entry_view(list, input, layout.code, max_subindex, member, c_name, entry_scope, position) || stored;
             ++position;
         }
-        o["soes"] = Json{{"stored", stored}};
-        o["entries"] = std::move(list);
-        out.objects.push_back(std::move(o));
+        {
+            ObjectBuilder soes(arena);
+            soes.add("stored", stored);
+            o.add("soes", soes.finish());
+        }
+        o.add("entries", list.finish());
+        object_list.add(o.finish());
+        out.soes_storage = out.soes_storage || stored;
     }
+    out.objects = object_list.finish();
     out.entry_count = position;
     return out;
 }

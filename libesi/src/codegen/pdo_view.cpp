@@ -23,35 +23,42 @@ const BasicType* pdo_entry_basic_type(const PdoEntry& entry, const Dictionary* d
     return e ? e->basic : nullptr;
 }
 
-Json pdos_view(const Device& device, PdoDirection direction) {
+ViewValue pdos_view(const Device& device, PdoDirection direction, const ViewContext& context) {
+    ViewArena& arena = *context.arena;
     const Dictionary* dictionary = device.dictionary();
-    Json list = Json::array();
+    ListBuilder list(arena);
     IdentifierScope pdo_scope;
     for (const Pdo& pdo : device.pdos(direction)) {
         const std::string name = primary_text(pdo.names);
-        char index_hex4[8];
-        std::snprintf(index_hex4, sizeof index_hex4, "%04X", pdo.index);
-        Json p;
-        p["position"] = list.size();
-        p["index"] = pdo.index;
-        p["index_hex"] = hex(pdo.index, 4);
-        p["index_hex4"] = index_hex4;
-        p["name"] = name;
-        p["c_name"] = pdo_scope.claim(c_identifier(name, std::string(direction == PdoDirection::rx ? "rxpdo_" : "txpdo_") + index_hex4),
-                                      index_hex4);
-        p["name_literal"] = c_string_literal(name);
-        p["comment"] = c_comment_text(name);
-        p["direction"] = direction == PdoDirection::rx ? "rx" : "tx";
-        p["has_sm"] = pdo.sm.has_value();
-        p["sm"] = pdo.sm ? Json(*pdo.sm) : Json(nullptr);
-        p["fixed"] = pdo.fixed.value_or(false);
-        p["mandatory"] = pdo.mandatory.value_or(false);
-        p["virtual"] = pdo.is_virtual.value_or(false);
-        Json excludes = Json::array();
-        for (const auto& x : pdo.excludes) excludes.push_back(Json{{"index", x.index}, {"index_hex", hex(x.index, 4)}});
-        p["excludes"] = std::move(excludes);
+        const ShortText index_hex4 = plain_hex_text(pdo.index, 4);
+        ObjectBuilder p(arena);
+        p.add("position", list.size());
+        p.add("index", pdo.index);
+        p.add("index_hex", hex_text(pdo.index, 4));
+        p.add("index_hex4", index_hex4);
+        p.add("name", name);
+        p.add("c_name", pdo_scope.claim(c_identifier(name, std::string(direction == PdoDirection::rx ? "rxpdo_" : "txpdo_") + index_hex4.str()),
+                                        std::string_view(index_hex4)));
+        p.add("name_literal", c_string_literal(name));
+        p.add("comment", c_comment_text(name));
+        p.add("direction", ViewValue::of_static(direction == PdoDirection::rx ? "rx" : "tx"));
+        p.add("has_sm", pdo.sm.has_value());
+        p.add("sm", pdo.sm);
+        p.add("fixed", pdo.fixed.value_or(false));
+        p.add("mandatory", pdo.mandatory.value_or(false));
+        p.add("virtual", pdo.is_virtual.value_or(false));
+        {
+            ListBuilder excludes(arena);
+            for (const auto& x : pdo.excludes) {
+                ObjectBuilder exclude(arena);
+                exclude.add("index", x.index);
+                exclude.add("index_hex", hex_text(x.index, 4));
+                excludes.add(exclude.finish());
+            }
+            p.add("excludes", excludes.finish());
+        }
 
-        Json entries = Json::array();
+        ListBuilder entries(arena);
         std::uint64_t offset = 0;
         for (const PdoEntry& e : pdo.entries) {
             const BasicType* basic = pdo_entry_basic_type(e, dictionary);
@@ -62,31 +69,31 @@ Json pdos_view(const Device& device, PdoDirection direction) {
             const std::uint32_t subindex = e.effective_subindex();
             // PDO mapping entry value (ETG.1000.6, objects 0x1600/0x1A00): index, sub-index, bit length.
             const std::uint32_t mapping = ((e.index & 0xFFFFu) << 16) | ((subindex & 0xFFu) << 8) | (e.bit_len & 0xFFu);
-            Json j;
-            j["index"] = e.index;
-            j["index_hex"] = hex(e.index, 4);
-            j["subindex"] = subindex;
-            j["subindex_hex"] = hex(subindex, 2);
-            j["bit_length"] = e.bit_len;
-            j["bit_offset"] = offset;
-            j["is_padding"] = e.is_padding();
-            j["name"] = entry_name;
-            j["name_literal"] = c_string_literal(entry_name);
-            j["comment"] = c_comment_text(entry_name);
-            j["data_type"] = basic ? std::string(basic->esi_name) : e.data_type.value_or("");
-            j["mapping_value"] = mapping;
-            j["mapping_value_hex"] = hex(mapping, 8);
-            j["pdo_index_hex"] = hex(pdo.index, 4);
-            entries.push_back(std::move(j));
+            ObjectBuilder j(arena);
+            j.add("index", e.index);
+            j.add("index_hex", hex_text(e.index, 4));
+            j.add("subindex", subindex);
+            j.add("subindex_hex", hex_text(subindex, 2));
+            j.add("bit_length", e.bit_len);
+            j.add("bit_offset", offset);
+            j.add("is_padding", e.is_padding());
+            j.add("name", entry_name);
+            j.add("name_literal", c_string_literal(entry_name));
+            j.add("comment", c_comment_text(entry_name));
+            j.add("data_type", basic ? ViewValue::of_static(basic->esi_name) : arena.string(e.data_type.value_or("")));
+            j.add("mapping_value", mapping);
+            j.add("mapping_value_hex", hex_text(mapping, 8));
+            j.add("pdo_index_hex", hex_text(pdo.index, 4));
+            entries.add(j.finish());
             offset += e.bit_len;
         }
-        p["bit_size"] = offset;
-        p["byte_size"] = (offset + 7) / 8;
-        p["entry_count"] = pdo.entries.size();
-        p["entries"] = std::move(entries);
-        list.push_back(std::move(p));
+        p.add("bit_size", offset);
+        p.add("byte_size", (offset + 7) / 8);
+        p.add("entry_count", pdo.entries.size());
+        p.add("entries", entries.finish());
+        list.add(p.finish());
     }
-    return list;
+    return list.finish();
 }
 
 }  // namespace esi::codegen

@@ -14,7 +14,7 @@ namespace esi::codegen {
 
 namespace {
 
-std::uint64_t native_bits(const std::string& c_type) {
+std::uint64_t native_bits(std::string_view c_type) {
     if (c_type == "uint8_t" || c_type == "int8_t") return 8;
     if (c_type == "uint16_t" || c_type == "int16_t") return 16;
     if (c_type == "uint32_t" || c_type == "int32_t" || c_type == "float") return 32;
@@ -28,9 +28,9 @@ std::string lower_hex(std::uint32_t value) {
     return buffer;
 }
 
-bool is_integer_type(const std::string& c_type) { return c_type.find("int") != std::string::npos; }
+bool is_integer_type(std::string_view c_type) { return c_type.find("int") != std::string_view::npos; }
 
-std::string unsigned_for(std::uint64_t bits) {
+std::string_view unsigned_for(std::uint64_t bits) {
     return bits <= 8 ? "uint8_t" : bits <= 16 ? "uint16_t" : bits <= 32 ? "uint32_t" : "uint64_t";
 }
 
@@ -45,7 +45,7 @@ struct MemberSource {
 
 class ImageBuilder {
 public:
-    explicit ImageBuilder(const ViewContext& context) : context_(context) {}
+    explicit ImageBuilder(const ViewContext& context) : context_(context), members_(*context.arena) {}
 
     void add(const MemberSource& source, std::uint64_t offset, std::uint64_t bits) {
         if (bits == 0) return;
@@ -56,13 +56,13 @@ public:
             if (!source.padding && ct.array_length == 0 && native_bits(ct.type) == bits) {
                 push(source, ct.type, 0, 0, offset, bits);
             } else {
-                const std::string element = !source.padding && ct.type == "char" ? "char" : "uint8_t";
+                const std::string_view element = !source.padding && ct.type == "char" ? "char" : "uint8_t";
                 push(source, element, bits / 8, 0, offset, bits);
             }
             return;
         }
         if (bits <= 64) {
-            std::string storage = unsigned_for(bits);
+            std::string_view storage = unsigned_for(bits);
             if (!source.padding && ct.array_length == 0 && is_integer_type(ct.type) && native_bits(ct.type) >= bits) storage = ct.type;
             push(source, storage, 0, bits, offset, bits);
             return;
@@ -81,47 +81,49 @@ public:
         add(part, offset + head, bits - head);
     }
 
-    Json take_members() { return std::move(members_); }
+    ViewValue take_members() { return members_.finish(); }
     bool has_bit_fields() const { return has_bit_fields_; }
 
 private:
-    void push(const MemberSource& source, const std::string& c_type, std::uint64_t array_length, std::uint64_t bit_width,
+    void push(const MemberSource& source, std::string_view c_type, std::uint64_t array_length, std::uint64_t bit_width,
               std::uint64_t offset, std::uint64_t bits) {
-        Json m;
+        ViewArena& arena = *context_.arena;
+        ObjectBuilder m(arena);
         const std::string c_name = source.padding ? scope_.claim("reserved_" + std::to_string(reserved_++))
                                                   : scope_.claim(source.wanted, lower_hex(source.pdo_index));
-        m["c_name"] = c_name;
-        m["c_type"] = c_type;
-        m["c_array_suffix"] = array_length ? "[" + std::to_string(array_length) + "]" : std::string();
-        m["is_bit_field"] = bit_width != 0;
-        m["bit_width"] = bit_width;
-        m["is_padding"] = source.padding;
-        m["byte_offset"] = offset / 8;
-        m["bit_offset"] = offset;
-        m["bit_length"] = bits;
-        m["name"] = source.name;
-        m["comment"] = c_comment_text(source.name);
+        m.add("c_name", c_name);
+        m.add("c_type", ViewValue::of_static(c_type));
+        m.add("c_array_suffix", array_length ? arena.string("[" + std::to_string(array_length) + "]") : ViewValue::of_static(""));
+        m.add("is_bit_field", bit_width != 0);
+        m.add("bit_width", bit_width);
+        m.add("is_padding", source.padding);
+        m.add("byte_offset", offset / 8);
+        m.add("bit_offset", offset);
+        m.add("bit_length", bits);
+        m.add("name", source.name);
+        m.add("comment", c_comment_text(source.name));
         const std::uint32_t index = source.entry ? source.entry->index : 0;
         const std::uint32_t subindex = source.entry ? source.entry->effective_subindex() : 0;
-        m["index_hex"] = hex(index, 4);
-        m["subindex_hex"] = hex(subindex, 2);
-        m["data_type"] = source.basic ? std::string(source.basic->esi_name)
-                                      : (source.entry && source.entry->data_type ? *source.entry->data_type : std::string());
-        m["pdo_index_hex"] = hex(source.pdo_index, 4);
+        m.add("index_hex", hex_text(index, 4));
+        m.add("subindex_hex", hex_text(subindex, 2));
+        m.add("data_type", source.basic ? ViewValue::of_static(source.basic->esi_name)
+                                        : arena.string(source.entry && source.entry->data_type ? *source.entry->data_type : std::string()));
+        m.add("pdo_index_hex", hex_text(source.pdo_index, 4));
         if (bit_width) has_bit_fields_ = true;
-        members_.push_back(std::move(m));
+        members_.add(m.finish());
     }
 
     const ViewContext& context_;
     IdentifierScope scope_;
-    Json members_ = Json::array();
+    ListBuilder members_;
     unsigned reserved_ = 0;
     bool has_bit_fields_ = false;
 };
 
 }  // namespace
 
-Json process_image_view(const Device& device, PdoDirection direction, const ViewContext& context) {
+ViewValue process_image_view(const Device& device, PdoDirection direction, const ViewContext& context) {
+    ViewArena& arena = *context.arena;
     const Dictionary* dictionary = device.dictionary();
     std::vector<const Pdo*> pdos;
     for (const Pdo& pdo : device.pdos(direction))
@@ -129,12 +131,16 @@ Json process_image_view(const Device& device, PdoDirection direction, const View
     std::stable_sort(pdos.begin(), pdos.end(), [](const Pdo* a, const Pdo* b) { return *a->sm < *b->sm; });
 
     ImageBuilder builder(context);
-    Json pdo_list = Json::array();
-    Json sms = Json::array();
+    ListBuilder pdo_list(arena);
+    std::vector<std::uint32_t> sms;
     std::uint64_t offset = 0;
     for (const Pdo* pdo : pdos) {
-        pdo_list.push_back(Json{{"index", pdo->index}, {"index_hex", hex(pdo->index, 4)}, {"sm", *pdo->sm}});
-        if (sms.empty() || sms.back().get<std::uint32_t>() != *pdo->sm) sms.push_back(*pdo->sm);
+        ObjectBuilder p(arena);
+        p.add("index", pdo->index);
+        p.add("index_hex", hex_text(pdo->index, 4));
+        p.add("sm", *pdo->sm);
+        pdo_list.add(p.finish());
+        if (sms.empty() || sms.back() != *pdo->sm) sms.push_back(*pdo->sm);
         for (const PdoEntry& e : pdo->entries) {
             MemberSource source;
             source.entry = &e;
@@ -155,16 +161,18 @@ Json process_image_view(const Device& device, PdoDirection direction, const View
             offset += e.bit_len;
         }
     }
-    Json image;
-    image["present"] = offset > 0;
-    image["direction"] = direction == PdoDirection::rx ? "rx" : "tx";
-    image["bit_size"] = offset;
-    image["byte_size"] = (offset + 7) / 8;
-    image["pdos"] = std::move(pdo_list);
-    image["sms"] = std::move(sms);
-    image["has_bit_fields"] = builder.has_bit_fields();
-    image["members"] = builder.take_members();
-    return image;
+    ObjectBuilder image(arena);
+    image.add("present", offset > 0);
+    image.add("direction", ViewValue::of_static(direction == PdoDirection::rx ? "rx" : "tx"));
+    image.add("bit_size", offset);
+    image.add("byte_size", (offset + 7) / 8);
+    image.add("pdos", pdo_list.finish());
+    ListBuilder sm_list(arena);
+    for (const std::uint32_t sm : sms) sm_list.add(sm);
+    image.add("sms", sm_list.finish());
+    image.add("has_bit_fields", builder.has_bit_fields());
+    image.add("members", builder.take_members());
+    return image.finish();
 }
 
 }  // namespace esi::codegen

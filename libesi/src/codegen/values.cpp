@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <algorithm>
+#include <string_view>
 
 #include "esi/codegen/identifier.hpp"
 
@@ -138,15 +140,29 @@ std::string format_real(double r, bool single) {
     return s;
 }
 
-std::string signed_literal(std::int64_t v) {
-    if (v == INT64_MIN) return "(-9223372036854775807LL - 1)";
-    if (v >= INT32_MIN && v <= INT32_MAX) return std::to_string(v);
-    return std::to_string(v) + "LL";
+ShortText signed_literal(std::int64_t v) {
+    ShortText out;
+    if (v == INT64_MIN) {
+        constexpr std::string_view min = "(-9223372036854775807LL - 1)";
+        min.copy(out.data, min.size());
+        out.size = static_cast<std::uint8_t>(min.size());
+        return out;
+    }
+    const auto r = std::to_chars(out.data, out.data + sizeof out.data, v);
+    char* end = r.ptr;
+    if (v < INT32_MIN || v > INT32_MAX) {
+        *end++ = 'L';
+        *end++ = 'L';
+    }
+    out.size = static_cast<std::uint8_t>(end - out.data);
+    return out;
 }
 
-std::string unsigned_literal(std::uint64_t v, std::uint64_t bit_length) {
+ShortText unsigned_literal(std::uint64_t v, std::uint64_t bit_length) {
     const int digits = static_cast<int>(std::min<std::uint64_t>((bit_length + 3) / 4, 16));
-    return hex(v, digits) + (v > 0xFFFFFFFFu ? "ull" : "u");
+    ShortText out = hex_text(v, digits);
+    for (const char c : std::string_view(v > 0xFFFFFFFFu ? "ull" : "u")) out.data[out.size++] = c;
+    return out;
 }
 
 std::string bytes_text(const std::string& bytes) {
@@ -162,10 +178,28 @@ std::string bytes_text(const std::string& bytes) {
 
 }  // namespace
 
-std::string hex(std::uint64_t value, int digits) {
-    char buffer[24];
-    std::snprintf(buffer, sizeof buffer, "0x%0*llX", digits, static_cast<unsigned long long>(value));
-    return buffer;
+ShortText plain_hex_text(std::uint64_t value, int digits) {
+    static constexpr char digit_chars[] = "0123456789ABCDEF";
+    int needed = 1;
+    while (needed < 16 && (value >> (4 * needed)) != 0) ++needed;
+    const int width = std::clamp(std::max(digits, needed), 1, 28);
+    ShortText out;
+    for (int k = 0; k < width; ++k) {
+        const int shift = 4 * (width - 1 - k);
+        out.data[k] = shift >= 64 ? '0' : digit_chars[(value >> shift) & 0xFu];
+    }
+    out.size = static_cast<std::uint8_t>(width);
+    return out;
+}
+
+ShortText hex_text(std::uint64_t value, int digits) {
+    const ShortText plain = plain_hex_text(value, digits);
+    ShortText out;
+    out.data[0] = '0';
+    out.data[1] = 'x';
+    std::memcpy(out.data + 2, plain.data, plain.size);
+    out.size = static_cast<std::uint8_t>(plain.size + 2);
+    return out;
 }
 
 ValueClass value_class_of(const BasicType* basic) {
@@ -208,65 +242,91 @@ EntryValues decode_entry_values(const ObjectEntry& entry) {
     return {decode(def, cls, entry.bit_size), decode(min, cls, entry.bit_size), decode(max, cls, entry.bit_size)};
 }
 
-nlohmann::ordered_json value_view(const DecodedValue& value, std::uint64_t bit_length) {
+bool has_bits(const DecodedValue& value) {
     using Kind = DecodedValue::Kind;
-    nlohmann::ordered_json v;
-    v["present"] = value.kind != Kind::none;
-    std::string kind = "none", text, int_literal = "0", uint_literal = "0u", real_literal = "0.0", string_literal = "\"\"";
+    return value.kind == Kind::signed_integer || value.kind == Kind::unsigned_integer || value.kind == Kind::real;
+}
+
+bool fits_32_bits(const DecodedValue& value) { return has_bits(value) && value.bits <= 0xFFFFFFFFu; }
+
+namespace {
+int bits_hex_digits(std::uint64_t bit_length) {
+    return static_cast<int>(std::min<std::uint64_t>(std::max<std::uint64_t>((bit_length + 3) / 4, 1), 16));
+}
+}  // namespace
+
+ShortText bits32_hex(const DecodedValue& value, std::uint64_t bit_length) {
+    return hex_text(has_bits(value) ? (value.bits & 0xFFFFFFFFu) : 0, std::min(bits_hex_digits(bit_length), 8));
+}
+
+ViewValue value_view(ViewArena& arena, const DecodedValue& value, std::uint64_t bit_length) {
+    using Kind = DecodedValue::Kind;
+    ObjectBuilder v(arena);
+    v.add("present", value.kind != Kind::none);
+    ViewValue kind = ViewValue::of_static("none"), kind_upper = ViewValue::of_static("NONE"), text = ViewValue::of_static("");
+    ViewValue int_literal = ViewValue::of_static("0"), uint_literal = ViewValue::of_static("0u"), real_literal = ViewValue::of_static("0.0");
+    ViewValue string_literal = ViewValue::of_static("\"\"");
     std::uint64_t byte_count = 0;
-    bool has_bits = false;
+    char number[32];
     switch (value.kind) {
         case Kind::none: break;
-        case Kind::signed_integer:
-            kind = "signed_integer";
-            text = std::to_string(value.i);
-            int_literal = signed_literal(value.i);
-            uint_literal = unsigned_literal(value.bits, bit_length);
-            has_bits = true;
+        case Kind::signed_integer: {
+            kind = ViewValue::of_static("signed_integer");
+            kind_upper = ViewValue::of_static("SIGNED_INTEGER");
+            const auto r = std::to_chars(number, number + sizeof number, value.i);
+            text = arena.string(std::string_view(number, static_cast<std::size_t>(r.ptr - number)));
+            int_literal = arena.string(signed_literal(value.i));
+            uint_literal = arena.string(unsigned_literal(value.bits, bit_length));
             break;
-        case Kind::unsigned_integer:
-            kind = "unsigned_integer";
-            text = std::to_string(value.bits);
-            uint_literal = unsigned_literal(value.bits, bit_length);
-            has_bits = true;
+        }
+        case Kind::unsigned_integer: {
+            kind = ViewValue::of_static("unsigned_integer");
+            kind_upper = ViewValue::of_static("UNSIGNED_INTEGER");
+            const auto r = std::to_chars(number, number + sizeof number, value.bits);
+            text = arena.string(std::string_view(number, static_cast<std::size_t>(r.ptr - number)));
+            uint_literal = arena.string(unsigned_literal(value.bits, bit_length));
             break;
-        case Kind::real:
-            kind = "real";
-            text = format_real(value.r, bit_length != 64);
-            if (text.find("__builtin") != std::string::npos) text = std::isnan(value.r) ? "nan" : (value.r < 0 ? "-inf" : "inf");
-            real_literal = format_real(value.r, bit_length != 64);
-            uint_literal = unsigned_literal(value.bits, bit_length ? bit_length : 32);
-            has_bits = true;
+        }
+        case Kind::real: {
+            kind = ViewValue::of_static("real");
+            kind_upper = ViewValue::of_static("REAL");
+            const std::string literal = format_real(value.r, bit_length != 64);
+            real_literal = arena.string(literal);
+            text = literal.find("__builtin") != std::string::npos
+                       ? ViewValue::of_static(std::isnan(value.r) ? "nan" : (value.r < 0 ? "-inf" : "inf"))
+                       : real_literal;
+            uint_literal = arena.string(unsigned_literal(value.bits, bit_length ? bit_length : 32));
             break;
+        }
         case Kind::string:
-            kind = "string";
-            text = value.text;
-            string_literal = c_string_literal(value.text);
+            kind = ViewValue::of_static("string");
+            kind_upper = ViewValue::of_static("STRING");
+            text = arena.string(value.text);
+            string_literal = arena.string(c_string_literal(value.text));
             byte_count = value.text.size();
             break;
         case Kind::bytes:
-            kind = "bytes";
-            text = bytes_text(value.text);
-            string_literal = c_string_literal(value.text);
+            kind = ViewValue::of_static("bytes");
+            kind_upper = ViewValue::of_static("BYTES");
+            text = arena.string(bytes_text(value.text));
+            string_literal = arena.string(c_string_literal(value.text));
             byte_count = value.text.size();
             break;
     }
-    v["kind"] = kind;
-    std::string upper = kind;
-    for (auto& c : upper) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    v["kind_upper"] = upper;
-    v["is_text"] = value.kind == Kind::string || value.kind == Kind::bytes;
-    v["text"] = text;
-    v["int_literal"] = int_literal;
-    v["uint_literal"] = uint_literal;
-    v["real_literal"] = real_literal;
-    v["string_literal"] = string_literal;
-    v["byte_count"] = byte_count;
-    const int digits = static_cast<int>(std::min<std::uint64_t>(std::max<std::uint64_t>((bit_length + 3) / 4, 1), 16));
-    v["bits_hex"] = has_bits ? hex(value.bits, digits) : std::string();
-    v["fits_32_bits"] = has_bits && value.bits <= 0xFFFFFFFFu;
-    v["bits32_hex"] = hex(has_bits ? (value.bits & 0xFFFFFFFFu) : 0, static_cast<int>(std::min(digits, 8)));
-    return v;
+    v.add("kind", kind);
+    v.add("kind_upper", kind_upper);
+    v.add("is_text", value.kind == Kind::string || value.kind == Kind::bytes);
+    v.add("text", text);
+    v.add("int_literal", int_literal);
+    v.add("uint_literal", uint_literal);
+    v.add("real_literal", real_literal);
+    v.add("string_literal", string_literal);
+    v.add("byte_count", byte_count);
+    const int digits = bits_hex_digits(bit_length);
+    v.add("bits_hex", has_bits(value) ? arena.string(hex_text(value.bits, digits)) : ViewValue::of_static(""));
+    v.add("fits_32_bits", fits_32_bits(value));
+    v.add("bits32_hex", bits32_hex(value, bit_length));
+    return v.finish();
 }
 
 }  // namespace esi::codegen
