@@ -13,8 +13,10 @@
 #include "esi/codegen/generate.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
+#include "esi/io/atomic_write.hpp"
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
+#include "esi/yaml/export.hpp"
 #include "esi/yaml/source.hpp"
 
 namespace {
@@ -50,6 +52,21 @@ Source load(const fs::path& path) {
     return {std::move(read.document), std::move(read.diagnostics)};
 }
 
+// --import ESI.xml -o SOURCE.yaml: an ESI file -> the YAML device source (docs/yaml-import.md).
+int import_esi(const std::string& esi_path, const std::string& output, const std::optional<esi::DeviceSelector>& device) {
+    esi::ReadResult read = esi::read_esi_file(esi_path);
+    print(read.diagnostics);
+    if (!read.document || read.diagnostics.has_errors()) return exit_usage;
+    esi::ImportOptions options;
+    options.device = device;
+    const esi::ImportResult imported = esi::export_device_source(*read.document, options);
+    print(imported.diagnostics);
+    if (!imported.yaml || imported.diagnostics.has_errors()) return exit_usage;
+    const esi::Diagnostics written = esi::write_file_atomically(output, *imported.yaml);
+    print(written);
+    return written.has_errors() ? exit_failed : exit_ok;
+}
+
 // The running executable, to find <prefix>/share/libesi/templates beside an installed esi-gen.
 std::optional<fs::path> executable_path(const char* argv0) {
     std::error_code ec;
@@ -63,7 +80,7 @@ std::optional<fs::path> executable_path(const char* argv0) {
 
 int main(int argc, char** argv) {
     CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
-    std::string source, output_dir, dump_model, device, prefix;
+    std::string source, output_dir, dump_model, device, prefix, import_path;
     std::vector<std::string> only, template_dirs;
     bool list_outputs = false, list_kinds = false;
     app.add_option("source", source, "YAML device source (.yaml/.yml) or ESI file (.xml)");
@@ -72,6 +89,7 @@ int main(int argc, char** argv) {
     app.add_option("--templates", template_dirs, "directory searched for templates before the built-in ones (repeatable)");
     app.add_option("--dump-model", dump_model, "print the JSON view the templates render from, and exit")->check(CLI::IsMember({"json"}));
     app.add_option("--device", device, "PRODUCTCODE[:REVISION]: only the matching devices");
+    app.add_option("--import", import_path, "ESI file to turn into a YAML device source (written to -o, a file)");
     app.add_option("--prefix", prefix, "C symbol prefix (default: each device's c_name)");
     app.add_flag("--list-outputs", list_outputs, "print the files a run would write, one per line, and exit");
     app.add_flag("--list-kinds", list_kinds, "print the output kinds and exit");
@@ -88,6 +106,22 @@ int main(int argc, char** argv) {
     if (list_kinds) {
         for (const auto& kind : esi::codegen::output_kinds()) std::cout << kind.name << "\t" << kind.summary << "\n";
         return exit_ok;
+    }
+    if (!import_path.empty()) {
+        if (output_dir.empty() || !source.empty()) {
+            std::cerr << "esi-gen: --import ESI.xml -o SOURCE.yaml [--device PRODUCTCODE[:REVISION]]\n";
+            return exit_usage;
+        }
+        std::optional<esi::DeviceSelector> selector;
+        if (!device.empty()) {
+            std::string error;
+            selector = esi::parse_device_selector(device, error);
+            if (!selector) {
+                std::cerr << "esi-gen: --device: " << error << "\n";
+                return exit_usage;
+            }
+        }
+        return import_esi(import_path, output_dir, selector);
     }
     if (source.empty()) {
         std::cerr << "esi-gen: no source given (--help for usage)\n";

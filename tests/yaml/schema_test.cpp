@@ -11,6 +11,8 @@
 #include <set>
 #include <yaml-cpp/yaml.h>
 
+#include "esi/xml/reader.hpp"
+#include "esi/yaml/export.hpp"
 #include "yaml/format_keys.hpp"
 #include "yaml/yaml_test_support.hpp"
 
@@ -248,6 +250,26 @@ TEST(YamlSchema, EverySampleValidates) {
         ++count;
     }
     EXPECT_GE(count, 5);
+}
+
+// What esi-gen --import writes uses only keys and value kinds the schema declares: the sample ESI
+// file, and the corpus files of a few vendors when ../shared is present.
+TEST(YamlSchema, ImportedFilesValidate) {
+    Validator validator(load_schema());
+    std::vector<std::filesystem::path> files = {esi::test::source_dir() / "samples" / "esi" / "example-digital-io.xml"};
+    if (esi::test::have_shared_corpus())
+        for (const char* name : {"ABT__EasyCAT_V2_0__soes.xml", "Beckhoff__EL1xxx__dls-ethercat__2011-08.xml",
+                                 "Beckhoff__AX5xxx__dls-ethercat.xml", "Inovance__IS620N_v2.6.7__hw_device_mgr.xml",
+                                 "PollenRobotics__NeckOrbita3d_fw1.5__poulpe.xml", "Weidmueller__UR20_FBC_from_IgH__ethercat-esi.xml"})
+            files.push_back(esi::test::corpus_esi_dir() / name);
+    for (const auto& path : files) {
+        SCOPED_TRACE(path.filename().string());
+        const esi::ReadResult read = esi::read_esi_file(path);
+        ASSERT_TRUE(read.document);
+        const esi::ImportResult imported = esi::export_device_source(*read.document);
+        ASSERT_TRUE(imported.yaml);
+        EXPECT_EQ(join(validator.validate(to_json(YAML::Load(*imported.yaml)))), "");
+    }
 }
 
 TEST(YamlSchema, RejectsUnknownKeysWrongTypesAndMissingKeys) {

@@ -69,8 +69,12 @@ void derive_device(Device& device, const DeviceIntent& intent, const std::string
 
     if (o.mailbox && device.mailbox && !device.mailbox->data_link_layer) device.mailbox->data_link_layer = true;
 
+    // A CoE device gets a dictionary for the derived objects; with those switched off (an imported
+    // ESI without Dictionary) none is added, so the device stays as it was.
     const bool has_coe = device.mailbox && device.mailbox->coe;
-    if (has_coe) dictionary_of(device, true);
+    const bool derives_objects = o.device_type_object || o.identity_object || o.mapping_objects || o.assignment_objects ||
+                                 o.sm_types_object;
+    if (has_coe && derives_objects) dictionary_of(device, true);
     derive_standard_objects(device, intent, context);
 
     if (o.pdo_entries) {

@@ -63,7 +63,9 @@ constexpr K dc_time[] = {"value", "factor", "input", "output_delay_time", "input
 #define ESI_INFO_KEYS "default", "min", "max", "default_data", "min_data", "max_data", "default_string", "display_name", \
                       "unit", "info_xml"
 constexpr K object[] = {"name", "comment", "type", "bit_size", "array", "entries", "enum", ESI_FLAG_KEYS, ESI_INFO_KEYS,
-                        "index_depend_on_slot", "index_depend_on_slot_group", "index_overwritten_by_module", "xml"};
+                        "info_sub_items", "index_depend_on_slot", "index_depend_on_slot_group", "index_overwritten_by_module", "xml"};
+// Object/Info/SubItem as an ESI file wrote it (the importer's verbatim form): values are untyped.
+constexpr K info_sub_item[] = {"name", ESI_INFO_KEYS, "xml"};
 constexpr K object_entry[] = {"name", "comment", "type", "bit_size", "bit_offset", ESI_FLAG_KEYS, ESI_INFO_KEYS, "xml"};
 constexpr K data_type[] = {"name", "index", "base_type", "bit_size", "comment", "array", "sub_items", "enum", "xml"};
 constexpr K array_info[] = {"lower_bound", "elements"};
@@ -108,6 +110,7 @@ constexpr std::array contexts{
     ESI_CONTEXT(type_sub_item), ESI_CONTEXT(enum_value),   ESI_CONTEXT(module),          ESI_CONTEXT(slots),
     ESI_CONTEXT(slot),         ESI_CONTEXT(slot_module),   ESI_CONTEXT(slot_module_class), ESI_CONTEXT(derive),
     ESI_CONTEXT(module_derive), ESI_CONTEXT(limits),       ESI_CONTEXT(xml),             ESI_CONTEXT(xml_element),
+    ESI_CONTEXT(info_sub_item),
 };
 #undef ESI_CONTEXT
 

@@ -54,6 +54,7 @@ enum class Context {
     limits,
     xml,
     xml_element,
+    info_sub_item,
 };
 
 struct ContextKeys {

@@ -131,9 +131,10 @@ std::vector<SyncManager> SourceParser::sync_managers(const Node& node, std::vect
             if (const Node* n = f->find("type")) {
                 sm.type = r_.text(*n, "type").value_or("");
                 if (!sm.type.empty() && !known_word(sm.type, types)) {
+                    // A warning: ETG.2000 gives Sm a free text and vendor files use others (DynamicOutputs …).
                     std::string message = "SM type '" + sm.type + "' is not MBoxOut, MBoxIn, Outputs or Inputs";
                     message += did_you_mean(sm.type, types);
-                    r_.error(*n, "yaml-value", message);
+                    r_.warning(pos_of(*n), "yaml-value", message + "; kept as written");
                 }
             }
             r_.optional_integer<std::uint32_t>(*f, "address", sm.start_address, 0, 0xFFFF);
@@ -185,9 +186,10 @@ std::vector<Fmmu> SourceParser::fmmus(const Node& node) {
         if (type_node) {
             fm.type = r_.text(*type_node, "type").value_or("");
             if (!fm.type.empty() && !known_word(fm.type, types)) {
+                // A warning, as for SM types: vendor files use their own texts and an import keeps them.
                 std::string message = "FMMU type '" + fm.type + "' is not Outputs, Inputs, MBoxState, DynamicInputs or DynamicOutputs";
                 message += did_you_mean(fm.type, types);
-                r_.error(*type_node, "yaml-value", message);
+                r_.warning(pos_of(*type_node), "yaml-value", message + "; kept as written");
             }
         }
         out.push_back(std::move(fm));
@@ -305,7 +307,9 @@ std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional
     if (r_.require(*f, "name", "a device")) d.names = names_of(*f, "name");
     d.comments = names_of(*f, "comment");
     d.urls = names_of(*f, "url");
-    if (const Node* n = f->find("group")) {
+    if (const Node* n = f->find("group"); n && n->IsNull()) {
+        // `group: null`: no GroupType at all, as some imported files have (esi-gen --import).
+    } else if (n) {
         d.group_type = r_.text(*n, "group");
         d.group_type_pos = pos_of(*n);
     } else if (group_count == 1 && only_group) {
@@ -321,8 +325,10 @@ std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional
         d.physics = r_.text(*n, "physics").value_or("");
         for (char c : d.physics)
             if (c != 'Y' && c != 'H' && c != 'K' && c != ' ') {
-                r_.error(*n, "yaml-value",
-                         "'physics' has one letter per port: Y or H (MII), K (E-Bus) or a blank (no port), not '" + d.physics + "'");
+                // A warning: vendor files use other letters, and an imported file keeps them.
+                r_.warning(pos_of(*n), "yaml-value",
+                           "'physics' has one letter per port: Y or H (MII), K (E-Bus) or a blank (no port), not '" + d.physics +
+                               "'; kept as written");
                 break;
             }
     } else {

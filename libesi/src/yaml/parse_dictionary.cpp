@@ -164,6 +164,35 @@ std::optional<ObjectInfo> SourceParser::info(const Fields& f, const Dictionary& 
     return info;
 }
 
+// Object/Info/SubItem as written, matched to the sub-entries by position and name the way the
+// ESI file did (object_layout.cpp). The importer writes this form; values are untyped numbers or
+// hex bytes because the sub-entry they belong to is only known once the layout is built.
+std::optional<ObjectSubItemInfo> SourceParser::info_sub_item(const Node& node) {
+    const auto f = r_.mapping(node, Context::info_sub_item, "an info sub-item");
+    if (!f) return std::nullopt;
+    ObjectSubItemInfo s;
+    s.pos = s.info.pos = f->pos();
+    if (r_.require(*f, "name", "an info sub-item")) s.name = r_.text(*f->find("name"), "name").value_or("");
+    auto value = [&](std::string_view key, std::string_view data_key, std::optional<Number>& number, std::optional<HexData>& data) {
+        if (const Node* n = f->find(key)) number = r_.number(*n, key);
+        if (const Node* n = f->find(data_key)) {
+            if (f->has(key))
+                r_.error(*f->key_node(data_key), "yaml-conflict",
+                         "give either '" + std::string(key) + "' or '" + std::string(data_key) + "', not both (one home per value)");
+            data = r_.hex(*n, data_key);
+        }
+    };
+    value("default", "default_data", s.info.default_value, s.info.default_data);
+    value("min", "min_data", s.info.min_value, s.info.min_data);
+    value("max", "max_data", s.info.max_value, s.info.max_data);
+    r_.optional_text(*f, "default_string", s.info.default_string);
+    r_.optional_text(*f, "display_name", s.info.display_name);
+    r_.optional_integer(*f, "unit", s.info.unit);
+    extras(*f, "info_xml", s.info.extras);
+    extras(*f, "xml", s.extras);
+    return s;
+}
+
 // An enum value's text: `1: On`, or `1: {text: On, comment: ...}`. False when the mapping form
 // is broken (already reported).
 bool SourceParser::enum_texts(const Node& value, EnumValue& ev) {
@@ -220,7 +249,7 @@ std::optional<DataType> SourceParser::data_type(const Node& node) {
                 if (r_.require(*sf, "type", "a sub-item")) s.type = r_.text(*sf->find("type"), "type").value_or("");
                 s.display_names = names_of(*sf, "display_name");
                 s.comments = names_of(*sf, "comment");
-                if (const Node* b = sf->find("bit_size")) s.bit_size = r_.integer<std::uint64_t>(*b, "bit_size", 1, 0xFFFFFFFF).value_or(0);
+                if (const Node* b = sf->find("bit_size")) s.bit_size = r_.integer<std::uint64_t>(*b, "bit_size", 0, 0xFFFFFFFF).value_or(0);
                 else s.bit_size = implied_bit_size(s.type).value_or(0);
                 if (const Node* b = sf->find("bit_offset")) s.bit_offset = r_.integer<std::uint64_t>(*b, "bit_offset", 0, 0xFFFFFFFF).value_or(0);
                 else s.bit_offset = offset;
@@ -448,7 +477,8 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
         }
         o.type = type;
         if (const Node* n = f->find("bit_size")) {
-            o.bit_size = r_.integer<std::uint64_t>(*n, "bit_size", 1, 0xFFFFFFFF).value_or(0);
+            // 0 is what some files write for STRING(0) and structured objects; kept as written.
+            o.bit_size = r_.integer<std::uint64_t>(*n, "bit_size", 0, 0xFFFFFFFF).value_or(0);
             o.bit_size_pos = pos_of(*n);
         } else {
             o.bit_size = type_bit_size(dictionary, type);
@@ -475,6 +505,17 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
         if (const Node* n = f->find("unit")) {
             if (!o.info) o.info = ObjectInfo{};
             o.info->unit = r_.integer<std::uint32_t>(*n, "unit");
+        }
+    }
+    if (const Node* n = f->find("info_sub_items")) {
+        if (has_entries) r_.error(*f->key_node("info_sub_items"), "yaml-conflict", "give the sub-entries' values under 'entries' or 'info_sub_items', not both");
+        else if (auto list = r_.sequence(*n, "info_sub_items")) {
+            if (!o.info) {
+                o.info = ObjectInfo{};
+                o.info->pos = pos_of(*n);
+            }
+            for (const auto& item : *list)
+                if (auto s = info_sub_item(item)) o.info->sub_items.push_back(std::move(*s));
         }
     }
     extras(*f, "xml", o.extras);

@@ -75,6 +75,7 @@ private:
     // Reads data_types and objects into `dictionary`; returns the names of the objects.
     ObjectNames dictionary(const Fields& f, Dictionary& dictionary);
     std::optional<DataType> data_type(const Node& node);
+    std::optional<ObjectSubItemInfo> info_sub_item(const Node& node);
     bool enum_texts(const Node& value, EnumValue& ev);
     void object(const Node& key, const Node& value, Dictionary& dictionary,
                 std::map<std::uint32_t, std::pair<SourcePos, std::string>>& seen);

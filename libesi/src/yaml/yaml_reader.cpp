@@ -220,6 +220,7 @@ constexpr std::array languages{
 
 Names Reader::names(const Node& node, std::string_view what) {
     Names out;
+    if (node.IsNull()) return out;  // `name: null`: no Name element (an imported file without one)
     if (node.IsScalar()) {
         out.push_back(LocalizedText{node.Scalar(), std::nullopt, pos_of(node)});
         return out;
@@ -248,7 +249,7 @@ Names Reader::names(const Node& node, std::string_view what) {
             }
         if (!known) {
             const ParsedNumber n = parse_number(code);
-            if (n.ok() && !n.value.negative && n.value.magnitude > 0 && n.value.magnitude <= 0xFFFF) {
+            if (n.ok() && !n.value.negative && n.value.magnitude <= 0xFFFF) {
                 t.lcid = static_cast<std::uint32_t>(n.value.magnitude);
                 known = true;
             }
