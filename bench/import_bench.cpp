@@ -10,39 +10,12 @@
 #include <string>
 #include <vector>
 
+#include "bench_support.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/yaml/export.hpp"
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double milliseconds(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
-
-template <class F>
-double best_of(int runs, F&& f) {
-    double best = 1e300;
-    for (int i = 0; i < runs; ++i) {
-        const auto start = Clock::now();
-        f();
-        best = std::min(best, milliseconds(Clock::now() - start));
-    }
-    return best;
-}
-
-std::vector<std::filesystem::path> largest_corpus_files(std::size_t count) {
-    std::vector<std::pair<std::uintmax_t, std::filesystem::path>> files;
-    const std::filesystem::path dir = std::filesystem::path(ESI_SHARED_DIR) / "corpus" / "esi";
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec))
-        if (entry.path().extension() == ".xml") files.emplace_back(entry.file_size(), entry.path());
-    std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    std::vector<std::filesystem::path> out;
-    for (std::size_t i = 0; i < files.size() && i < count; ++i) out.push_back(files[i].second);
-    return out;
-}
-
-}  // namespace
+using esi::bench::best_of;
+using esi::bench::largest_corpus_files;
 
 int main(int argc, char** argv) {
     std::vector<std::filesystem::path> files;
