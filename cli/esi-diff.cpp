@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "diagnostic_line.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/diff/diff.hpp"
 #include "esi/diff/output.hpp"
@@ -21,12 +22,6 @@ bool reaches(esi::Verdict verdict, const std::string& fail_on) {
     if (fail_on == "never") return false;
     if (fail_on == "any") return verdict != esi::Verdict::identical;
     return verdict == esi::Verdict::breaking;
-}
-
-void print_diagnostic(const esi::Diagnostic& d) {
-    std::cerr << d.path;
-    if (d.pos.known()) std::cerr << ':' << d.pos.line << ':' << d.pos.column;
-    std::cerr << ": " << esi::to_string(d.severity) << ": " << d.message << " [" << d.rule << "]\n";
 }
 
 }  // namespace
@@ -66,7 +61,7 @@ int main(int argc, char** argv) {
 
     const esi::FileDiff diff = esi::diff_files(old_path, new_path, options);
     if (!diff.result) {
-        for (const auto& d : diff.diagnostics) print_diagnostic(d);
+        for (const auto& d : diff.diagnostics) print_diagnostic_line(d, "");
         if (diff.diagnostics.empty()) std::cerr << "esi-diff: could not read the input files\n";
         return exit_usage;
     }

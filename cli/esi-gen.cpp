@@ -10,6 +10,7 @@
 #include <iostream>
 #include <optional>
 
+#include "diagnostic_line.hpp"
 #include "esi/codegen/generate.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
@@ -30,11 +31,7 @@ constexpr int exit_usage = 2;
 void print(const esi::Diagnostics& diagnostics) {
     esi::Diagnostics sorted = diagnostics;
     sorted.sort();
-    for (const auto& d : sorted) {
-        std::string where = d.path.empty() ? "esi-gen" : d.path;
-        if (d.pos.known()) where += ":" + std::to_string(d.pos.line) + ":" + std::to_string(d.pos.column);
-        std::cerr << where << ": " << esi::to_string(d.severity) << ": " << d.message << " [" << d.rule << "]\n";
-    }
+    for (const auto& d : sorted) print_diagnostic_line(d, "esi-gen");
 }
 
 struct Source {
