@@ -17,8 +17,10 @@ namespace {
 
 constexpr std::size_t max_rows = 300;
 
-// Table cells: no pipes, no line breaks, no backticks (they would end the code span).
-std::string cell(std::string_view s) {
+// Text inside a table cell: no pipes, no line breaks, no backticks (they would end a code
+// span). Outside a code span `<` and `>` are escaped too, or GitHub would read them as HTML; inside
+// one they show as written.
+std::string table_text(std::string_view s, bool inside_code_span) {
     std::string out;
     for (char c : s) {
         if (c == '|')
@@ -27,9 +29,9 @@ std::string cell(std::string_view s) {
             out += ' ';
         else if (c == '`')
             out += '\'';
-        else if (c == '<')
+        else if (c == '<' && !inside_code_span)
             out += "&lt;";
-        else if (c == '>')
+        else if (c == '>' && !inside_code_span)
             out += "&gt;";
         else
             out += c;
@@ -37,20 +39,9 @@ std::string cell(std::string_view s) {
     return out;
 }
 
-std::string code(std::string_view s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '|')
-            out += "\\|";
-        else if (c == '\n' || c == '\r')
-            out += ' ';
-        else if (c == '`')
-            out += '\'';
-        else
-            out += c;
-    }
-    return "`" + out + "`";
-}
+std::string cell(std::string_view s) { return table_text(s, false); }
+
+std::string code(std::string_view s) { return "`" + table_text(s, true) + "`"; }
 
 std::string lines(const Change& c) {
     auto line = [](SourcePos p) { return p.known() ? std::to_string(p.line) : std::string("-"); };
