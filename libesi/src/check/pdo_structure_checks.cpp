@@ -7,7 +7,7 @@
 #include "check/pdo_checks.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
-#include "esi/check/limits.hpp"
+#include "esi/model/limits.hpp"
 
 namespace esi::rules::pdo {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Check functions of the profile-… rules: one per field of Limits (esi/check/limits.hpp). They
+// Check functions of the profile-… rules: one per field of Limits (esi/model/limits.hpp). They
 // only fire when the effective .esi-lint.yaml sets that limit for the device.
 
 #include "esi/check/rule.hpp"

@@ -9,7 +9,7 @@
 #include <map>
 #include <set>
 
-#include "esi/derive/typed_value.hpp"
+#include "esi/model/typed_value.hpp"
 #include "esi/model/object_layout.hpp"
 
 namespace esi::yaml {
