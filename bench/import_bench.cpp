@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "bench_support.hpp"
+#include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
-#include "esi/yaml/export.hpp"
 
 using esi::bench::best_of;
 using esi::bench::largest_corpus_files;

@@ -14,10 +14,10 @@
 #include "esi/codegen/generate.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
+#include "esi/import/import.hpp"
 #include "esi/io/atomic_write.hpp"
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
-#include "esi/yaml/export.hpp"
 #include "esi/yaml/source.hpp"
 
 namespace {

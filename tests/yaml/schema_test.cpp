@@ -11,8 +11,8 @@
 #include <set>
 #include <yaml-cpp/yaml.h>
 
+#include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
-#include "esi/yaml/export.hpp"
 #include "yaml/format_keys.hpp"
 #include "yaml/yaml_test_support.hpp"
 

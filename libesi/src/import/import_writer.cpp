@@ -2,7 +2,7 @@
 // parser reads back into the same model field. Values the format cannot hold exactly are
 // reported as warnings with their model path (the round-trip test lists them).
 
-#include "yaml/export_writer.hpp"
+#include "import/import_writer.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -8,7 +8,7 @@
 #include "esi/derive/derive.hpp"
 #include "esi/diagnostic.hpp"
 #include "esi/model/ethercat_info.hpp"
-#include "yaml/emitter.hpp"
+#include "import/yaml_emitter.hpp"
 
 namespace esi::yaml {
 

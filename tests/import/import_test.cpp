@@ -6,12 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "esi/diff/diff.hpp"
+#include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/xml/writer.hpp"
-#include "esi/yaml/export.hpp"
 #include "esi/yaml/source.hpp"
+#include "import/yaml_emitter.hpp"
 #include "support/test_support.hpp"
-#include "yaml/emitter.hpp"
 
 namespace {
 

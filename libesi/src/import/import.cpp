@@ -4,14 +4,14 @@
 // device identical to the original; otherwise that part stays explicit with its derivation
 // switched off (docs/yaml-import.md).
 
-#include "esi/yaml/export.hpp"
+#include "esi/import/import.hpp"
 
 #include <filesystem>
 
 #include "esi/diff/diff.hpp"
 #include "esi/yaml/source.hpp"
-#include "yaml/emitter.hpp"
-#include "yaml/export_writer.hpp"
+#include "import/import_writer.hpp"
+#include "import/yaml_emitter.hpp"
 
 namespace esi {
 

@@ -13,9 +13,9 @@
 
 #include "esi/diff/classification.hpp"
 #include "esi/diff/diff.hpp"
+#include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/xml/writer.hpp"
-#include "esi/yaml/export.hpp"
 #include "esi/yaml/source.hpp"
 #include "support/test_support.hpp"
 

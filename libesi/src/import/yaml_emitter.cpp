@@ -1,4 +1,4 @@
-#include "yaml/emitter.hpp"
+#include "import/yaml_emitter.hpp"
 
 #include <algorithm>
 #include <cctype>
