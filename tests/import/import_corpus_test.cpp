@@ -53,7 +53,7 @@ Outcome round_trip(const std::string& file, const std::string& bytes) {
     Outcome out;
     const esi::ReadResult original = esi::read_esi(bytes, file);
     if (!original.document) return {false, "not read"};
-    const esi::ImportResult imported = esi::export_device_source(*original.document);
+    const esi::ImportResult imported = esi::import_device_source(*original.document);
     if (!imported.yaml) {
         out.failure = "import failed";
         for (const auto& d : imported.diagnostics) out.failure += ": " + d.message;

@@ -12,7 +12,7 @@
 #include "esi/derive/typed_value.hpp"
 #include "esi/model/object_layout.hpp"
 
-namespace esi::yaml {
+namespace esi::import_detail {
 
 namespace {
 
@@ -141,12 +141,12 @@ DeriveOptions OmitPlan::derive_options() const {
     return o;
 }
 
-void ExportWriter::warn(const std::string& path, const std::string& message) {
+void ImportWriter::warn(const std::string& path, const std::string& message) {
     if (quiet) return;
     warnings_.emplace(Severity::warning, "import-inexact", path + ": " + message, "", SourcePos{});
 }
 
-void ExportWriter::names(YNode& map, std::string_view key, const Names& ns, const std::string& path, bool required) {
+void ImportWriter::names(YNode& map, std::string_view key, const Names& ns, const std::string& path, bool required) {
     if (ns.empty()) {
         if (required) map.set(key, YNode::raw("null"));  // the key is required; null says "no Name element"
         return;
@@ -171,13 +171,13 @@ void ExportWriter::names(YNode& map, std::string_view key, const Names& ns, cons
     map.set(key, std::move(m));
 }
 
-void ExportWriter::images(YNode& map, const Images& images) {
+void ImportWriter::images(YNode& map, const Images& images) {
     if (images.image_data16x14) map.set("image_data", hex_data(*images.image_data16x14));
     if (images.image_file16x14) map.set("image_file", YNode::text(*images.image_file16x14));
     if (images.image16x14) map.set("image16x14", YNode::text(*images.image16x14));
 }
 
-YNode ExportWriter::extras(const Extras& e) {
+YNode ImportWriter::extras(const Extras& e) {
     YNode x = YNode::map();
     if (!e.attributes.empty()) {
         YNode a = YNode::map();
@@ -203,11 +203,11 @@ YNode ExportWriter::extras(const Extras& e) {
     return x;
 }
 
-void ExportWriter::set_extras(YNode& map, std::string_view key, const Extras& e) {
+void ImportWriter::set_extras(YNode& map, std::string_view key, const Extras& e) {
     if (!e.empty()) map.set(key, extras(e));
 }
 
-YNode ExportWriter::vendor(const Vendor& v) {
+YNode ImportWriter::vendor(const Vendor& v) {
     YNode m = YNode::map();
     if (v.id) m.set("id", YNode::hex(*v.id, 8));
     else warn("Vendor/Id", "missing; the YAML format requires it");
@@ -222,7 +222,7 @@ YNode ExportWriter::vendor(const Vendor& v) {
     return m;
 }
 
-YNode ExportWriter::group(const Group& g) {
+YNode ImportWriter::group(const Group& g) {
     YNode m = YNode::map();
     m.set("type", YNode::text(g.type));
     names(m, "name", g.names, "Group[" + g.type + "]", true);
@@ -234,7 +234,7 @@ YNode ExportWriter::group(const Group& g) {
     return m;
 }
 
-YNode ExportWriter::profile(const Profile& p) {
+YNode ImportWriter::profile(const Profile& p) {
     YNode m = YNode::map();
     if (p.profile_no) m.set("number", YNode::integer(*p.profile_no));
     if (p.add_info) m.set("add_info", YNode::integer(*p.add_info));
@@ -244,7 +244,7 @@ YNode ExportWriter::profile(const Profile& p) {
     return m;
 }
 
-void ExportWriter::flags(YNode& m, const ObjectFlags& f, const std::string& path, std::string_view xml_key) {
+void ImportWriter::flags(YNode& m, const ObjectFlags& f, const std::string& path, std::string_view xml_key) {
     if (f.access) {
         if (*f.access == "ro" || *f.access == "rw" || *f.access == "wo") m.set("access", YNode::text(*f.access));
         else warn(child(path, "Flags/Access"), "'" + *f.access + "' is not ro, rw or wo; dropped");
@@ -274,7 +274,7 @@ void ExportWriter::flags(YNode& m, const ObjectFlags& f, const std::string& path
 // Info values. An integer value is written typed (`default: 5`) when the parser reads it back the
 // same; otherwise (out of the type's range, a type that is not an integer) as its little-endian
 // bytes, which esi-diff compares equal (CoE transfers values little-endian, ETG.1000.6).
-void ExportWriter::info(YNode& m, const ObjectInfo& i, const Dictionary* d, const std::string& type, const std::string& path,
+void ImportWriter::info(YNode& m, const ObjectInfo& i, const Dictionary* d, const std::string& type, const std::string& path,
                         bool typed_limits) {
     const ValueType vt = value_type(d, type);
     const bool integer = vt.basic && vt.basic->is_integer();
@@ -302,7 +302,7 @@ void ExportWriter::info(YNode& m, const ObjectInfo& i, const Dictionary* d, cons
     set_extras(m, "info_xml", i.extras);
 }
 
-YNode ExportWriter::data_type(const DataType& t, const std::string& path) {
+YNode ImportWriter::data_type(const DataType& t, const std::string& path) {
     const std::string p = path + "/DataType[" + t.name + "]";
     YNode m = YNode::map();
     m.set("name", YNode::text(t.name));
@@ -380,7 +380,7 @@ YNode ExportWriter::data_type(const DataType& t, const std::string& path) {
     return m;
 }
 
-YNode ExportWriter::object(const Object& o, const Dictionary& d, const std::string& path) {
+YNode ImportWriter::object(const Object& o, const Dictionary& d, const std::string& path) {
     const std::string p = path + "/Object[" + hex_text(o.index, 4) + "]";
     YNode m = YNode::map();
     names(m, "name", o.names, p, true);
@@ -431,7 +431,7 @@ bool derived_object(const Object& o, const Device* device, const OmitPlan& plan)
 
 }  // namespace
 
-void ExportWriter::dictionary(YNode& m, const Dictionary& d, const std::string& path, const OmitPlan& plan, const Device* device) {
+void ImportWriter::dictionary(YNode& m, const Dictionary& d, const std::string& path, const OmitPlan& plan, const Device* device) {
     // Types only derived objects name go with them (derivation declares them again); a type named
     // like a basic type goes when DataTypes are derived. The plan was checked by deriving.
     std::set<std::string> kept_names, omitted_names;
@@ -479,7 +479,7 @@ void ExportWriter::dictionary(YNode& m, const Dictionary& d, const std::string& 
     set_extras(m, "dictionary_xml", d.extras);
 }
 
-YNode ExportWriter::init_cmd(const InitCmd& c, int protocol, const std::string& path) {
+YNode ImportWriter::init_cmd(const InitCmd& c, int protocol, const std::string& path) {
     YNode m = YNode::map();
     if (c.transitions.empty()) warn(path, "an InitCmd without Transition cannot be written");
     m.set("transition", transitions(c.transitions));
@@ -515,7 +515,7 @@ YNode ExportWriter::init_cmd(const InitCmd& c, int protocol, const std::string& 
     return m;
 }
 
-YNode ExportWriter::mailbox(const Mailbox& mb, const Device* device, const OmitPlan& plan, const std::string& path) {
+YNode ImportWriter::mailbox(const Mailbox& mb, const Device* device, const OmitPlan& plan, const std::string& path) {
     YNode m = YNode::map();
     if (device && plan.sms) {
         // The mailbox SMs are derived from these (docs/yaml-format.md, SyncManagers).
@@ -615,7 +615,7 @@ YNode ExportWriter::mailbox(const Mailbox& mb, const Device* device, const OmitP
     return m;
 }
 
-YNode ExportWriter::pdo_entry(const PdoEntry& e, const OmitPlan& plan, const std::string& path) {
+YNode ImportWriter::pdo_entry(const PdoEntry& e, const OmitPlan& plan, const std::string& path) {
     YNode m = YNode::map();
     if (e.index_invalid) warn(path, "an entry whose Index is not a number cannot be written");
     if (e.is_padding()) {
@@ -653,7 +653,7 @@ YNode ExportWriter::pdo_entry(const PdoEntry& e, const OmitPlan& plan, const std
     return m;
 }
 
-YNode ExportWriter::pdo(const Pdo& p, const OmitPlan& plan, const std::string& path) {
+YNode ImportWriter::pdo(const Pdo& p, const OmitPlan& plan, const std::string& path) {
     const std::string pp = path + "/" + std::string(p.element_name()) + "[" + hex_text(p.index, 4) + "]";
     YNode m = YNode::map();
     if (p.index_invalid) warn(pp, "a PDO whose Index is not a number cannot be written");
@@ -705,7 +705,7 @@ YNode ExportWriter::pdo(const Pdo& p, const OmitPlan& plan, const std::string& p
     return m;
 }
 
-YNode ExportWriter::dc_time(const DcTime& t) {
+YNode ImportWriter::dc_time(const DcTime& t) {
     YNode m = YNode::map();
     m.set("value", YNode::integer(t.value));
     if (t.factor) m.set("factor", YNode::integer(*t.factor));
@@ -715,7 +715,7 @@ YNode ExportWriter::dc_time(const DcTime& t) {
     return m;
 }
 
-YNode ExportWriter::dc(const Dc& dc) {
+YNode ImportWriter::dc(const Dc& dc) {
     YNode m = YNode::map();
     YNode modes = YNode::seq();
     for (const auto& mode : dc.op_modes) {
@@ -743,7 +743,7 @@ YNode ExportWriter::dc(const Dc& dc) {
     return m;
 }
 
-YNode ExportWriter::slots(const Slots& s, const std::string& path) {
+YNode ImportWriter::slots(const Slots& s, const std::string& path) {
     YNode m = YNode::map();
     YNode list = YNode::seq();
     for (std::size_t i = 0; i < s.slots.size(); ++i) {
@@ -803,7 +803,7 @@ YNode ExportWriter::slots(const Slots& s, const std::string& path) {
     return m;
 }
 
-YNode ExportWriter::eeprom(const Eeprom& e, const std::string& path) {
+YNode ImportWriter::eeprom(const Eeprom& e, const std::string& path) {
     YNode m = YNode::map();
     auto hex_field = [&](const char* key, const std::optional<HexData>& h) {
         if (!h) return;
@@ -841,7 +841,7 @@ YNode ExportWriter::eeprom(const Eeprom& e, const std::string& path) {
     return m;
 }
 
-YNode ExportWriter::device(const Device& d, const EtherCATInfo& info, const OmitPlan& plan) {
+YNode ImportWriter::device(const Device& d, const EtherCATInfo& info, const OmitPlan& plan) {
     std::string path = "Device[" + d.type.text + "]";
     if (d.type.product_code) path = "Device[" + hex_text(*d.type.product_code, 8) + ":" + hex_text(d.type.revision_no.value_or(0), 8) + "]";
     YNode m = YNode::map();
@@ -979,7 +979,7 @@ YNode ExportWriter::device(const Device& d, const EtherCATInfo& info, const Omit
     return m;
 }
 
-YNode ExportWriter::module(const Module& mo) {
+YNode ImportWriter::module(const Module& mo) {
     const std::string path = "Modules/Module[" + hex_text(mo.module_ident, 8) + "]";
     YNode m = YNode::map();
     m.set("type", YNode::text(mo.type));
@@ -1015,4 +1015,4 @@ YNode ExportWriter::module(const Module& mo) {
     return m;
 }
 
-}  // namespace esi::yaml
+}  // namespace esi::import_detail

@@ -1,5 +1,5 @@
 #pragma once
-// The model -> YAML tree half of the importer (export.cpp decides what derivation may
+// The model -> YAML tree half of the importer (import.cpp decides what derivation may
 // reproduce; this writes what is left). One function per part of docs/yaml-format.md.
 
 #include <string>
@@ -10,7 +10,7 @@
 #include "esi/model/ethercat_info.hpp"
 #include "import/yaml_emitter.hpp"
 
-namespace esi::yaml {
+namespace esi::import_detail {
 
 // Which derived parts of one device are left out of the YAML (and derived again on load).
 // Everything false: the device is written completely, with `derive: false`.
@@ -34,9 +34,9 @@ struct OmitPlan {
     [[nodiscard]] DeriveOptions derive_options() const;
 };
 
-class ExportWriter {
+class ImportWriter {
 public:
-    explicit ExportWriter(Diagnostics& warnings) : warnings_(warnings) {}
+    explicit ImportWriter(Diagnostics& warnings) : warnings_(warnings) {}
 
     YNode vendor(const Vendor& v);
     YNode group(const Group& g);
@@ -44,7 +44,7 @@ public:
     YNode module(const Module& m);
     YNode extras(const Extras& e);
 
-    // Warnings are suppressed while a trial export runs (export.cpp tries plans).
+    // Warnings are suppressed while a trial import runs (import.cpp tries plans).
     bool quiet = false;
 
 private:
@@ -71,4 +71,4 @@ private:
     Diagnostics& warnings_;
 };
 
-}  // namespace esi::yaml
+}  // namespace esi::import_detail

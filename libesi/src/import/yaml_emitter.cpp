@@ -4,7 +4,7 @@
 #include <cctype>
 #include <cstdio>
 
-namespace esi::yaml {
+namespace esi::import_detail {
 
 namespace {
 
@@ -166,4 +166,4 @@ std::string YNode::render() const {
     return out;
 }
 
-}  // namespace esi::yaml
+}  // namespace esi::import_detail
