@@ -1,7 +1,10 @@
 #pragma once
 // The model -> YAML tree half of the importer (import.cpp decides what derivation may
-// reproduce; this writes what is left). One function per part of docs/yaml-format.md.
+// reproduce; this writes what is left). One function per part of docs/yaml-format.md, in files
+// that mirror the parser's: import_common.cpp, import_dictionary.cpp, import_mailbox.cpp,
+// import_device.cpp, import_module.cpp.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -70,5 +73,11 @@ private:
 
     Diagnostics& warnings_;
 };
+
+// Shared by the import_*.cpp files (defined in import_common.cpp).
+std::string hex_text(std::uint64_t v, int digits);  // 0x00AB for (0xAB, 4)
+YNode hex_data(const HexData& h);
+bool valid_hex(const HexData& h);  // an even number of hex digits
+std::string child(const std::string& path, const std::string& name);  // the model path `path/name`
 
 }  // namespace esi::import_detail
