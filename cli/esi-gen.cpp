@@ -14,10 +14,10 @@
 #include "esi/codegen/generate.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
+#include "esi/import/import.hpp"
 #include "esi/io/atomic_write.hpp"
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
-#include "esi/yaml/export.hpp"
 #include "esi/yaml/source.hpp"
 
 namespace {
@@ -56,7 +56,7 @@ int import_esi(const std::string& esi_path, const std::string& output, const std
     if (!read.document || read.diagnostics.has_errors()) return exit_usage;
     esi::ImportOptions options;
     options.device = device;
-    const esi::ImportResult imported = esi::export_device_source(*read.document, options);
+    const esi::ImportResult imported = esi::import_device_source(*read.document, options);
     print(imported.diagnostics);
     if (!imported.yaml || imported.diagnostics.has_errors()) return exit_usage;
     const esi::Diagnostics written = esi::write_file_atomically(output, *imported.yaml);

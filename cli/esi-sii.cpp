@@ -16,7 +16,7 @@
 #include "esi/sii/build.hpp"
 #include "esi/sii/check.hpp"
 #include "esi/sii/decode.hpp"
-#include "esi/sii/output.hpp"
+#include "esi/sii/image_file.hpp"
 #include "esi/sii/render.hpp"
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
@@ -190,7 +190,7 @@ int main(int argc, char** argv) {
     build->add_option("input", build_input, "ESI.xml or SOURCE.yaml")->required();
     build->add_option("-o,--output", build_output, "image file to write")->required();
     build->add_option("--device", build_device, "PRODUCTCODE[:REVISION] (decimal, #x… or 0x…) when the file has several devices");
-    build->add_option("--format", build_format, "bin (default), hex (Intel HEX) or c (C array)");
+    build->add_option("--format", build_format, "image file format: bin (default), hex (Intel HEX) or c (C array)");
     build->add_flag("--no-pdo", no_pdo, "leave out the TxPDO/RxPDO categories");
     build->add_flag("--no-dc", no_dc, "leave out the DC category");
 

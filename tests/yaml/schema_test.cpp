@@ -11,8 +11,8 @@
 #include <set>
 #include <yaml-cpp/yaml.h>
 
+#include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
-#include "esi/yaml/export.hpp"
 #include "yaml/format_keys.hpp"
 #include "yaml/yaml_test_support.hpp"
 
@@ -266,7 +266,7 @@ TEST(YamlSchema, ImportedFilesValidate) {
         SCOPED_TRACE(path.filename().string());
         const esi::ReadResult read = esi::read_esi_file(path);
         ASSERT_TRUE(read.document);
-        const esi::ImportResult imported = esi::export_device_source(*read.document);
+        const esi::ImportResult imported = esi::import_device_source(*read.document);
         ASSERT_TRUE(imported.yaml);
         EXPECT_EQ(join(validator.validate(to_json(YAML::Load(*imported.yaml)))), "");
     }

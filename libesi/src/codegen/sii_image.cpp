@@ -1,7 +1,7 @@
-#include "sii_output.hpp"
+#include "sii_image.hpp"
 
 #include "esi/sii/build.hpp"
-#include "esi/sii/output.hpp"
+#include "esi/sii/image_file.hpp"
 
 namespace esi::codegen {
 
