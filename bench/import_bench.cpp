@@ -11,9 +11,12 @@
 #include <vector>
 
 #include "bench_support.hpp"
+<<<<<<< HEAD
 #include "esi/io/read_file.hpp"
+=======
+#include "esi/import/import.hpp"
+>>>>>>> main
 #include "esi/xml/reader.hpp"
-#include "esi/yaml/export.hpp"
 
 using esi::bench::best_of;
 using esi::bench::largest_corpus_files;
@@ -37,10 +40,10 @@ int main(int argc, char** argv) {
         const double read_ms = best_of(3, [&] { document = esi::read_esi(*bytes, path.string(), read_options).document; });
         if (!document) continue;
         esi::ImportResult imported;
-        const double import_ms = best_of(2, [&] { imported = esi::export_device_source(*document); });
+        const double import_ms = best_of(2, [&] { imported = esi::import_device_source(*document); });
         esi::ImportOptions explicit_options;
         explicit_options.omit_derived = false;
-        const double explicit_ms = best_of(3, [&] { (void)esi::export_device_source(*document, explicit_options); });
+        const double explicit_ms = best_of(3, [&] { (void)esi::import_device_source(*document, explicit_options); });
         const double mb = static_cast<double>(bytes->size()) / 1e6;
         std::printf("%-45.45s %7.2f %8zu %9.1f %9.1f %9.2f %9.1f %9.1f\n", path.filename().string().c_str(), mb, imported.devices, read_ms,
                     import_ms, mb / (import_ms / 1e3), explicit_ms, mb / (explicit_ms / 1e3));

@@ -9,7 +9,7 @@
 #include "diagnostic_line.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/diff/diff.hpp"
-#include "esi/diff/output.hpp"
+#include "esi/diff/report.hpp"
 #include "esi/version.hpp"
 
 namespace {
@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
     std::string device;
     app.add_option("OLD", old_path, "the old ESI file")->required();
     app.add_option("NEW", new_path, "the new ESI file")->required();
-    app.add_option("--format", format, "text, json or markdown")->check(CLI::IsMember({"text", "json", "markdown"}));
+    app.add_option("--format", format, "report format: text, json or markdown")->check(CLI::IsMember({"text", "json", "markdown"}));
     app.add_option("--fail-on", fail_on, "lowest class that makes the exit code 1: breaking, any or never")
         ->check(CLI::IsMember({"breaking", "any", "never"}));
     app.add_option("--device", device, "compare only PRODUCTCODE[:REVISION] (decimal, #x… or 0x…)");
@@ -72,14 +72,14 @@ int main(int argc, char** argv) {
     }
 
     const esi::DiffLabels labels{old_path, new_path};
-    std::string output;
+    std::string report;
     if (format == "json")
-        output = esi::render_diff_json(result);
+        report = esi::render_diff_json(result);
     else if (format == "markdown")
-        output = esi::render_diff_markdown(result, labels);
+        report = esi::render_diff_markdown(result, labels);
     else
-        output = esi::render_diff_text(result, labels);
-    std::fwrite(output.data(), 1, output.size(), stdout);
+        report = esi::render_diff_text(result, labels);
+    std::fwrite(report.data(), 1, report.size(), stdout);
     std::fflush(stdout);
     return reaches(result.verdict, fail_on) ? exit_changes : exit_clean;
 }

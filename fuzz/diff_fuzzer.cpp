@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "esi/diff/diff.hpp"
-#include "esi/diff/output.hpp"
+#include "esi/diff/report.hpp"
 #include "esi/xml/reader.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

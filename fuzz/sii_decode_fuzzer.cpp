@@ -11,7 +11,7 @@
 #include "esi/sii/check.hpp"
 #include "esi/sii/decode.hpp"
 #include "esi/sii/encode.hpp"
-#include "esi/sii/output.hpp"
+#include "esi/sii/image_file.hpp"
 #include "esi/sii/render.hpp"
 #include "esi/xml/reader.hpp"
 

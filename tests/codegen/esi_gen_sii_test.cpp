@@ -6,7 +6,7 @@
 
 #include "codegen_test_support.hpp"
 #include "esi/sii/decode.hpp"
-#include "esi/sii/output.hpp"
+#include "esi/sii/image_file.hpp"
 
 namespace {
 

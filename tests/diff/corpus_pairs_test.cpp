@@ -6,7 +6,7 @@
 
 #include "esi/diff/classification.hpp"
 #include "esi/diff/diff.hpp"
-#include "esi/diff/output.hpp"
+#include "esi/diff/report.hpp"
 #include "support/test_support.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "esi/sii/output.hpp"
+#include "esi/sii/image_file.hpp"
 #include "fixture.hpp"
 #include "support/test_support.hpp"
 

@@ -15,7 +15,7 @@
 #include "esi/sii/build.hpp"
 #include "esi/sii/check.hpp"
 #include "esi/sii/decode.hpp"
-#include "esi/sii/output.hpp"
+#include "esi/sii/image_file.hpp"
 #include "esi/sii/text.hpp"
 #include "esi/xml/reader.hpp"
 #include "image_diff.hpp"

@@ -10,8 +10,8 @@
 #include <regex.h>
 #include <set>
 
+#include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
-#include "esi/yaml/export.hpp"
 #include "esi/yaml/format_keys.hpp"
 #include "esi/yaml/tree.hpp"
 #include "yaml/yaml_test_support.hpp"
@@ -276,7 +276,7 @@ TEST(YamlSchema, ImportedFilesValidate) {
         SCOPED_TRACE(path.filename().string());
         const esi::ReadResult read = esi::read_esi_file(path);
         ASSERT_TRUE(read.document);
-        const esi::ImportResult imported = esi::export_device_source(*read.document);
+        const esi::ImportResult imported = esi::import_device_source(*read.document);
         ASSERT_TRUE(imported.yaml);
         EXPECT_EQ(join(validator.validate(yaml_to_json(*imported.yaml))), "");
     }

@@ -3,7 +3,7 @@
 
 #include "esi/codegen/generate.hpp"
 #include "esi/xml/writer.hpp"
-#include "sii_output.hpp"
+#include "sii_image.hpp"
 
 namespace esi::codegen {
 

@@ -1,6 +1,7 @@
 #pragma once
-// The three renderings of a diff: readable text grouped by device (most severe first), JSON for
-// machines, and Markdown for a pull-request comment. All are deterministic.
+// The diff report, rendered three ways: readable text grouped by device (most severe first),
+// JSON for machines, and Markdown for a pull-request comment (esi-diff --format). All are
+// deterministic.
 
 #include <string>
 

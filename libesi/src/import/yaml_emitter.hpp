@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-namespace esi::yaml {
+namespace esi::import_detail {
 
 class YNode {
 public:
@@ -56,4 +56,4 @@ private:
 // A text as a YAML scalar: plain when that reads back as the same string, else double-quoted.
 [[nodiscard]] std::string quote_text(std::string_view text);
 
-}  // namespace esi::yaml
+}  // namespace esi::import_detail

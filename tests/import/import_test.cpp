@@ -1,4 +1,4 @@
-// esi::export_device_source (esi-gen --import as a library): texts that YAML would read as
+// esi::import_device_source (esi-gen --import as a library): texts that YAML would read as
 // something else survive, derived parts are left out exactly when derivation reproduces them and
 // kept explicit otherwise, --device selects, unmodelled XML goes through the escape hatch, and
 // the output is deterministic. The corpus-wide round trip is import_corpus_test.cpp.
@@ -6,18 +6,18 @@
 #include <gtest/gtest.h>
 
 #include "esi/diff/diff.hpp"
+#include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/xml/writer.hpp"
-#include "esi/yaml/export.hpp"
 #include "esi/yaml/source.hpp"
+#include "import/yaml_emitter.hpp"
 #include "support/test_support.hpp"
-#include "yaml/emitter.hpp"
 
 namespace {
 
 using esi::DeviceSelector;
 using esi::EsiDocument;
-using esi::export_device_source;
+using esi::import_device_source;
 using esi::ImportOptions;
 using esi::ImportResult;
 
@@ -35,7 +35,7 @@ std::string diagnostics_text(const esi::Diagnostics& ds) {
 
 // import -> YAML -> load -> write_esi -> read_esi, compared with the original; "" when identical.
 std::string round_trip_changes(const EsiDocument& original, const ImportOptions& options = {}) {
-    const ImportResult imported = export_device_source(original, options);
+    const ImportResult imported = import_device_source(original, options);
     if (!imported.yaml) return "import failed: " + diagnostics_text(imported.diagnostics);
     const esi::DeviceSource loaded = esi::load_device_source(*imported.yaml, "imported.yaml");
     if (!loaded.document) return "load failed: " + diagnostics_text(loaded.diagnostics) + *imported.yaml;
@@ -50,7 +50,7 @@ std::string round_trip_changes(const EsiDocument& original, const ImportOptions&
 esi::Device& first_device(EsiDocument& d) { return d.infos.at(0).devices.at(0); }
 
 TEST(ImportQuoting, PlainOnlyWhenYamlReadsTheSameText) {
-    using esi::yaml::quote_text;
+    using esi::import_detail::quote_text;
     EXPECT_EQ(quote_text("Digital I/O"), "Digital I/O");
     EXPECT_EQ(quote_text("Outputs"), "Outputs");
     for (const char* special : {"yes", "No", "on", "OFF", "y", "~", "null", "true", "", "#1", "*ref", "&anchor", "a: b",
@@ -76,7 +76,7 @@ TEST(ImportQuoting, TextsSurviveTheRoundTrip) {
     d.comments = {esi::LocalizedText{"yes", std::nullopt, {}}};
     d.rx_pdos.at(0).names = {esi::LocalizedText{"no", std::nullopt, {}}};
     EXPECT_EQ(round_trip_changes(doc), "");
-    const ImportResult imported = export_device_source(doc);
+    const ImportResult imported = import_device_source(doc);
     ASSERT_TRUE(imported.yaml);
     EXPECT_NE(imported.yaml->find("\"yes\""), std::string::npos);
     EXPECT_NE(imported.yaml->find("\"tab\\there\""), std::string::npos);
@@ -84,7 +84,7 @@ TEST(ImportQuoting, TextsSurviveTheRoundTrip) {
 
 TEST(ImportDerivation, DerivedPartsOfAnEsiGenFileAreLeftOut) {
     const EsiDocument doc = load_sample("digital-io-8.yaml");
-    const ImportResult imported = export_device_source(doc);
+    const ImportResult imported = import_device_source(doc);
     ASSERT_TRUE(imported.yaml) << diagnostics_text(imported.diagnostics);
     const std::string& y = *imported.yaml;
     EXPECT_EQ(imported.derived_devices, 1u);
@@ -106,7 +106,7 @@ TEST(ImportDerivation, WhatTheFileHasDifferentlyStaysExplicit) {
     esi::Dictionary& dict = *d.profiles.at(0).dictionary;
     for (auto& o : dict.objects)
         if (o.index == 0x1018) o.names = {esi::LocalizedText{"Identity (vendor text)", std::nullopt, {}}};
-    const ImportResult imported = export_device_source(doc);
+    const ImportResult imported = import_device_source(doc);
     ASSERT_TRUE(imported.yaml);
     const std::string& y = *imported.yaml;
     EXPECT_NE(y.find("sms:"), std::string::npos) << y;
@@ -124,7 +124,7 @@ TEST(ImportDerivation, WithoutOmissionEverythingIsExplicit) {
     const EsiDocument doc = load_sample("servo-item-c-series.yaml");
     ImportOptions options;
     options.omit_derived = false;
-    const ImportResult imported = export_device_source(doc, options);
+    const ImportResult imported = import_device_source(doc, options);
     ASSERT_TRUE(imported.yaml);
     EXPECT_EQ(imported.derived_devices, 0u);
     EXPECT_NE(imported.yaml->find("derive: false"), std::string::npos);
@@ -144,7 +144,7 @@ TEST(ImportDevice, SelectorPicksOneDeviceAndReportsNoMatch) {
 
     ImportOptions options;
     options.device = DeviceSelector{0x4711, std::nullopt};
-    const ImportResult one = export_device_source(doc, options);
+    const ImportResult one = import_device_source(doc, options);
     ASSERT_TRUE(one.yaml) << diagnostics_text(one.diagnostics);
     EXPECT_EQ(one.devices, 1u);
     EXPECT_NE(one.yaml->find("product_code: 0x00004711"), std::string::npos);
@@ -153,11 +153,11 @@ TEST(ImportDevice, SelectorPicksOneDeviceAndReportsNoMatch) {
     ASSERT_TRUE(loaded.document);
     EXPECT_EQ(loaded.document->infos.at(0).devices.size(), 1u);
 
-    const ImportResult all = export_device_source(doc);
+    const ImportResult all = import_device_source(doc);
     EXPECT_EQ(all.devices, doc.infos.at(0).devices.size());
 
     options.device = DeviceSelector{0x9999, std::nullopt};
-    const ImportResult none = export_device_source(doc, options);
+    const ImportResult none = import_device_source(doc, options);
     EXPECT_FALSE(none.yaml);
     ASSERT_FALSE(none.diagnostics.empty());
     EXPECT_EQ(none.diagnostics.begin()->rule, "import-device");
@@ -188,7 +188,7 @@ TEST(ImportEscapeHatch, UnmodelledXmlComesBackWhereItWas) {
 )";
     const esi::ReadResult read = esi::read_esi(xml, "x.xml");
     ASSERT_TRUE(read.document);
-    const ImportResult imported = export_device_source(*read.document);
+    const ImportResult imported = import_device_source(*read.document);
     ASSERT_TRUE(imported.yaml) << diagnostics_text(imported.diagnostics);
     EXPECT_NE(imported.yaml->find("CheckRevisionNo: EQ_OR_G"), std::string::npos) << *imported.yaml;
     EXPECT_NE(imported.yaml->find("after: RxPdo"), std::string::npos) << *imported.yaml;
@@ -197,8 +197,8 @@ TEST(ImportEscapeHatch, UnmodelledXmlComesBackWhereItWas) {
 
 TEST(ImportOutput, DeterministicAndRejectsOtherRoots) {
     const EsiDocument doc = load_sample("modular-coupler.yaml");
-    const ImportResult a = export_device_source(doc);
-    const ImportResult b = export_device_source(doc);
+    const ImportResult a = import_device_source(doc);
+    const ImportResult b = import_device_source(doc);
     ASSERT_TRUE(a.yaml);
     EXPECT_EQ(*a.yaml, *b.yaml);
     EXPECT_EQ(round_trip_changes(doc), "");
@@ -206,7 +206,7 @@ TEST(ImportOutput, DeterministicAndRejectsOtherRoots) {
     EsiDocument list = doc;
     list.kind = esi::DocumentKind::ethercat_info_list;
     list.infos.push_back(doc.infos.at(0));
-    const ImportResult r = export_device_source(list);
+    const ImportResult r = import_device_source(list);
     EXPECT_FALSE(r.yaml);
     ASSERT_FALSE(r.diagnostics.empty());
     EXPECT_EQ(r.diagnostics.begin()->rule, "import-root");

@@ -1,10 +1,10 @@
-#include "yaml/emitter.hpp"
+#include "import/yaml_emitter.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
 
-namespace esi::yaml {
+namespace esi::import_detail {
 
 namespace {
 
@@ -166,4 +166,4 @@ std::string YNode::render() const {
     return out;
 }
 
-}  // namespace esi::yaml
+}  // namespace esi::import_detail

@@ -1,4 +1,4 @@
-// Text output of esi-diff: a summary line, then one block per device (most severe first), one
+// The text report of esi-diff: a summary line, then one block per device (most severe first), one
 // change per line with its class, model path, message and kind, and the positions in both files
 // on the next line in the file:line:column form editors jump to.
 
@@ -6,7 +6,7 @@
 
 #include "diff/device_groups.hpp"
 #include "esi/diff/classification.hpp"
-#include "esi/diff/output.hpp"
+#include "esi/diff/report.hpp"
 
 namespace esi {
 

@@ -1,29 +1,29 @@
-// export_device_source(): the file-level YAML and, per device, the choice of what to leave to
+// import_device_source(): the file-level YAML and, per device, the choice of what to leave to
 // derivation. The choice is checked, not guessed: a device is written with a part left out, the
 // text is loaded again (load_device_source, which derives), and esi::diff_documents must find the
 // device identical to the original; otherwise that part stays explicit with its derivation
 // switched off (docs/yaml-import.md).
 
-#include "esi/yaml/export.hpp"
+#include "esi/import/import.hpp"
 
 #include <filesystem>
 
 #include "esi/diff/diff.hpp"
 #include "esi/yaml/source.hpp"
-#include "yaml/emitter.hpp"
-#include "yaml/export_writer.hpp"
+#include "import/import_writer.hpp"
+#include "import/yaml_emitter.hpp"
 
 namespace esi {
 
 namespace {
 
-using yaml::ExportWriter;
-using yaml::OmitPlan;
-using yaml::YNode;
+using import_detail::ImportWriter;
+using import_detail::OmitPlan;
+using import_detail::YNode;
 
 // The file around the devices: everything but `devices` (modules left out for a derivation
 // check: slots name modules by ident, and only the device is compared).
-YNode file_node(ExportWriter& w, const EsiDocument& document, const EtherCATInfo& info, bool with_modules = true) {
+YNode file_node(ImportWriter& w, const EsiDocument& document, const EtherCATInfo& info, bool with_modules = true) {
     YNode root = YNode::map();
     if (document.kind == DocumentKind::ethercat_module) root.set("root_element", YNode::text("EtherCATModule"));
     if (info.version) root.set("esi_version", YNode::text(*info.version));
@@ -41,7 +41,7 @@ YNode file_node(ExportWriter& w, const EsiDocument& document, const EtherCATInfo
     return root;
 }
 
-void finish(ExportWriter& w, YNode& root, const EtherCATInfo& info) {
+void finish(ImportWriter& w, YNode& root, const EtherCATInfo& info) {
     if (!info.extras.empty()) root.set("xml", w.extras(info.extras));
     if (!info.descriptions_extras.empty()) root.set("descriptions_xml", w.extras(info.descriptions_extras));
 }
@@ -50,7 +50,7 @@ void finish(ExportWriter& w, YNode& root, const EtherCATInfo& info) {
 // that slots and group references resolve), compared with the original.
 bool plan_reproduces(const EsiDocument& document, const EtherCATInfo& info, const Device& device, const OmitPlan& plan) {
     Diagnostics scratch;
-    ExportWriter w(scratch);
+    ImportWriter w(scratch);
     w.quiet = true;
     YNode root = file_node(w, document, info, false);
     YNode devices = YNode::seq();
@@ -109,7 +109,7 @@ OmitPlan choose_plan(const EsiDocument& document, const EtherCATInfo& info, cons
 
 }  // namespace
 
-ImportResult export_device_source(const EsiDocument& document, const ImportOptions& options) {
+ImportResult import_device_source(const EsiDocument& document, const ImportOptions& options) {
     ImportResult out;
     if ((document.kind != DocumentKind::ethercat_info && document.kind != DocumentKind::ethercat_module) || document.infos.size() != 1) {
         out.diagnostics.emplace(Severity::error, "import-root",
@@ -118,7 +118,7 @@ ImportResult export_device_source(const EsiDocument& document, const ImportOptio
         return out;
     }
     const EtherCATInfo& info = document.infos.front();
-    ExportWriter w(out.diagnostics);
+    ImportWriter w(out.diagnostics);
     YNode root = file_node(w, document, info);
     if (document.kind == DocumentKind::ethercat_info) {
         YNode devices = YNode::seq();

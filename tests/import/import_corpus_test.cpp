@@ -13,9 +13,9 @@
 
 #include "esi/diff/classification.hpp"
 #include "esi/diff/diff.hpp"
+#include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/xml/writer.hpp"
-#include "esi/yaml/export.hpp"
 #include "esi/yaml/source.hpp"
 #include "support/test_support.hpp"
 
@@ -53,7 +53,7 @@ Outcome round_trip(const std::string& file, const std::string& bytes) {
     Outcome out;
     const esi::ReadResult original = esi::read_esi(bytes, file);
     if (!original.document) return {false, "not read"};
-    const esi::ImportResult imported = esi::export_device_source(*original.document);
+    const esi::ImportResult imported = esi::import_device_source(*original.document);
     if (!imported.yaml) {
         out.failure = "import failed";
         for (const auto& d : imported.diagnostics) out.failure += ": " + d.message;

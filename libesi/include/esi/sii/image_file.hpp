@@ -1,7 +1,8 @@
 #pragma once
-// The forms an image leaves the tool in: raw binary (what `ethercat sii_write` and SOEM's
-// eepromtool -w take), Intel HEX (eepromtool -wi, EEPROM programmers) and a C array (firmware
-// that emulates the EEPROM, as EEPROM_generator's eeprom.h). And the way back from bin or HEX.
+// An SII image as a file, in the formats it leaves the tool in: raw binary (what
+// `ethercat sii_write` and SOEM's eepromtool -w take), Intel HEX (eepromtool -wi, EEPROM
+// programmers) and a C array (firmware that emulates the EEPROM, as EEPROM_generator's eeprom.h).
+// And the way back from bin or HEX.
 
 #include <cstdint>
 #include <filesystem>

@@ -1,16 +1,19 @@
 #pragma once
-// The model -> YAML tree half of the importer (export.cpp decides what derivation may
-// reproduce; this writes what is left). One function per part of docs/yaml-format.md.
+// The model -> YAML tree half of the importer (import.cpp decides what derivation may
+// reproduce; this writes what is left). One function per part of docs/yaml-format.md, in files
+// that mirror the parser's: import_common.cpp, import_dictionary.cpp, import_mailbox.cpp,
+// import_device.cpp, import_module.cpp.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "esi/derive/derive.hpp"
 #include "esi/diagnostic.hpp"
 #include "esi/model/ethercat_info.hpp"
-#include "yaml/emitter.hpp"
+#include "import/yaml_emitter.hpp"
 
-namespace esi::yaml {
+namespace esi::import_detail {
 
 // Which derived parts of one device are left out of the YAML (and derived again on load).
 // Everything false: the device is written completely, with `derive: false`.
@@ -34,9 +37,9 @@ struct OmitPlan {
     [[nodiscard]] DeriveOptions derive_options() const;
 };
 
-class ExportWriter {
+class ImportWriter {
 public:
-    explicit ExportWriter(Diagnostics& warnings) : warnings_(warnings) {}
+    explicit ImportWriter(Diagnostics& warnings) : warnings_(warnings) {}
 
     YNode vendor(const Vendor& v);
     YNode group(const Group& g);
@@ -44,7 +47,7 @@ public:
     YNode module(const Module& m);
     YNode extras(const Extras& e);
 
-    // Warnings are suppressed while a trial export runs (export.cpp tries plans).
+    // Warnings are suppressed while a trial import runs (import.cpp tries plans).
     bool quiet = false;
 
 private:
@@ -71,4 +74,10 @@ private:
     Diagnostics& warnings_;
 };
 
-}  // namespace esi::yaml
+// Shared by the import_*.cpp files (defined in import_common.cpp).
+std::string hex_text(std::uint64_t v, int digits);  // 0x00AB for (0xAB, 4)
+YNode hex_data(const HexData& h);
+bool valid_hex(const HexData& h);  // an even number of hex digits
+std::string child(const std::string& path, const std::string& name);  // the model path `path/name`
+
+}  // namespace esi::import_detail

@@ -32,6 +32,6 @@ struct ImportResult {
     std::size_t derived_devices = 0;  // devices with at least one part left to derivation
 };
 
-[[nodiscard]] ImportResult export_device_source(const EsiDocument& document, const ImportOptions& options = {});
+[[nodiscard]] ImportResult import_device_source(const EsiDocument& document, const ImportOptions& options = {});
 
 }  // namespace esi

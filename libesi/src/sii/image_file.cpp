@@ -1,4 +1,4 @@
-#include "esi/sii/output.hpp"
+#include "esi/sii/image_file.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-// Markdown output of esi-diff, for a pull-request comment: the verdict, a warning when a breaking
+// The Markdown report of esi-diff, for a pull-request comment: the verdict, a warning when a breaking
 // change came without a RevisionNo change, then a table per device (most severe first) with the
 // cosmetic changes folded away. Long reports are cut so the comment stays postable (GitHub
 // rejects comments over 65536 characters).
@@ -7,7 +7,7 @@
 
 #include "diff/device_groups.hpp"
 #include "esi/diff/classification.hpp"
-#include "esi/diff/output.hpp"
+#include "esi/diff/report.hpp"
 
 namespace esi {
 

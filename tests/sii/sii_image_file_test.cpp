@@ -1,4 +1,4 @@
-// The three output formats: raw binary, Intel HEX (round trip through the parser, extended
+// The three image file formats: raw binary, Intel HEX (round trip through the parser, extended
 // addresses past 64 KiB, every malformed record refused) and the C array.
 
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <regex>
 
-#include "esi/sii/output.hpp"
+#include "esi/sii/image_file.hpp"
 
 namespace {
 
@@ -19,7 +19,7 @@ Bytes pattern(std::size_t n) {
     return b;
 }
 
-TEST(SiiOutput, FormatNames) {
+TEST(SiiImageFile, FormatNames) {
     ImageFormat f{};
     EXPECT_TRUE(parse_image_format("bin", f));
     EXPECT_EQ(f, ImageFormat::bin);
@@ -30,13 +30,13 @@ TEST(SiiOutput, FormatNames) {
     EXPECT_FALSE(parse_image_format("srec", f));
 }
 
-TEST(SiiOutput, BinaryIsTheBytesThemselves) {
+TEST(SiiImageFile, BinaryIsTheBytesThemselves) {
     const Bytes b = pattern(300);
     const std::string out = format_image(b, ImageFormat::bin);
     EXPECT_EQ(Bytes(out.begin(), out.end()), b);
 }
 
-TEST(SiiOutput, IntelHexRecordsAndChecksums) {
+TEST(SiiImageFile, IntelHexRecordsAndChecksums) {
     const Bytes b = {0x80, 0x02, 0x00, 0x00};
     // :04 0000 00 80020000 -> sum 04+00+00+00+80+02 = 0x86 -> checksum 0x7A
     EXPECT_EQ(to_intel_hex(b), ":04000000800200007A\n:00000001FF\n");
@@ -46,7 +46,7 @@ TEST(SiiOutput, IntelHexRecordsAndChecksums) {
     EXPECT_NE(hex.find("\n:08002000"), std::string::npos);
 }
 
-TEST(SiiOutput, IntelHexRoundTripsIncludingPast64KiB) {
+TEST(SiiImageFile, IntelHexRoundTripsIncludingPast64KiB) {
     for (const std::size_t size : {std::size_t{0}, std::size_t{1}, std::size_t{2048}, std::size_t{70000}}) {
         SCOPED_TRACE(size);
         const Bytes b = pattern(size);
@@ -60,13 +60,13 @@ TEST(SiiOutput, IntelHexRoundTripsIncludingPast64KiB) {
     }
 }
 
-TEST(SiiOutput, IntelHexAcceptsCrLfAndLowerCase) {
+TEST(SiiImageFile, IntelHexAcceptsCrLfAndLowerCase) {
     const HexParseResult r = parse_intel_hex(":04000000800200007a\r\n:00000001ff\r\n");
     ASSERT_TRUE(r.bytes.has_value()) << r.error;
     EXPECT_EQ(*r.bytes, (Bytes{0x80, 0x02, 0x00, 0x00}));
 }
 
-TEST(SiiOutput, MalformedIntelHexIsRefusedWithItsLine) {
+TEST(SiiImageFile, MalformedIntelHexIsRefusedWithItsLine) {
     const std::pair<std::string, std::size_t> bad[] = {
         {":04000000800200007B\n:00000001FF\n", 1},      // checksum
         {":0400000080020000\n:00000001FF\n", 1},        // record too short for its count
@@ -85,7 +85,7 @@ TEST(SiiOutput, MalformedIntelHexIsRefusedWithItsLine) {
     }
 }
 
-TEST(SiiOutput, LoadImageTellsHexFromBinary) {
+TEST(SiiImageFile, LoadImageTellsHexFromBinary) {
     const Bytes b = pattern(64);
     const LoadedImage from_hex = load_image(to_intel_hex(b));
     ASSERT_TRUE(from_hex.bytes.has_value());
@@ -99,7 +99,7 @@ TEST(SiiOutput, LoadImageTellsHexFromBinary) {
     EXPECT_FALSE(load_image_file("/nonexistent/image.bin").bytes.has_value());
 }
 
-TEST(SiiOutput, CArrayHoldsEveryByteInOrder) {
+TEST(SiiImageFile, CArrayHoldsEveryByteInOrder) {
     const Bytes b = pattern(37);
     const std::string c = to_c_array(b, "my_eeprom", "EL2004 rev 0x00100000");
     EXPECT_NE(c.find("EL2004 rev 0x00100000"), std::string::npos);

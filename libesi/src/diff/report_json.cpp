@@ -1,11 +1,11 @@
-// JSON output of esi-diff, exactly the shape of issue 4 §1:
+// The JSON report of esi-diff, exactly the shape of issue 4 §1:
 // {verdict, changes:[{device:{name, product_code, revision}, path, kind, class, old, new, old_pos,
 // new_pos, message}]}. Product code and revision are numbers; absent values are null.
 
 #include <nlohmann/json.hpp>
 
 #include "esi/diff/classification.hpp"
-#include "esi/diff/output.hpp"
+#include "esi/diff/report.hpp"
 
 namespace esi {
 

@@ -1,6 +1,6 @@
-// The three output formats, as golden files: tests/diff/data/{old,new}.xml rendered as text, JSON
-// and Markdown must equal tests/diff/golden/*. After an intended change of the output, regenerate
-// them with ESI_UPDATE_GOLDEN=1 ./build/tests/diff_tests --gtest_filter='DiffOutput*' and review
+// The three report formats, as golden files: tests/diff/data/{old,new}.xml rendered as text, JSON
+// and Markdown must equal tests/diff/golden/*. After an intended change of a report, regenerate
+// them with ESI_UPDATE_GOLDEN=1 ./build/tests/diff_tests --gtest_filter='DiffReport*' and review
 // the difference before committing.
 
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "esi/diff/output.hpp"
+#include "esi/diff/report.hpp"
 #include "support/test_support.hpp"
 
 namespace {
@@ -37,16 +37,16 @@ void check_golden(const std::string& name, const std::string& actual) {
     }
     ASSERT_TRUE(fs::exists(path)) << "missing golden file " << path << " (run with ESI_UPDATE_GOLDEN=1)";
     EXPECT_EQ(esi::test::read_text(path), actual)
-        << "output differs from " << path << "; if intended, regenerate with ESI_UPDATE_GOLDEN=1";
+        << "report differs from " << path << "; if intended, regenerate with ESI_UPDATE_GOLDEN=1";
 }
 
-TEST(DiffOutput, TextMatchesGolden) { check_golden("text.txt", esi::render_diff_text(sample_result(), labels)); }
+TEST(DiffReport, TextMatchesGolden) { check_golden("text.txt", esi::render_diff_text(sample_result(), labels)); }
 
-TEST(DiffOutput, JsonMatchesGolden) { check_golden("json.json", esi::render_diff_json(sample_result())); }
+TEST(DiffReport, JsonMatchesGolden) { check_golden("json.json", esi::render_diff_json(sample_result())); }
 
-TEST(DiffOutput, MarkdownMatchesGolden) { check_golden("markdown.md", esi::render_diff_markdown(sample_result(), labels)); }
+TEST(DiffReport, MarkdownMatchesGolden) { check_golden("markdown.md", esi::render_diff_markdown(sample_result(), labels)); }
 
-TEST(DiffOutput, JsonHasExactlyTheIssueShape) {
+TEST(DiffReport, JsonHasExactlyTheIssueShape) {
     const auto j = nlohmann::json::parse(esi::render_diff_json(sample_result()));
     ASSERT_TRUE(j.is_object());
     EXPECT_EQ(j.size(), 2u);
@@ -82,7 +82,7 @@ TEST(DiffOutput, JsonHasExactlyTheIssueShape) {
     EXPECT_EQ(j.at("changes").at(1).at("device").at("product_code"), 0x1001);
 }
 
-TEST(DiffOutput, IdenticalFilesSayIdenticalInEveryFormat) {
+TEST(DiffReport, IdenticalFilesSayIdenticalInEveryFormat) {
     const esi::FileDiff diff = esi::diff_files(data("old.xml"), data("old.xml"));
     ASSERT_TRUE(diff.result);
     EXPECT_EQ(esi::render_diff_text(*diff.result, {"a.xml", "b.xml"}), "a.xml -> b.xml: identical (no changes)\n");
@@ -91,13 +91,13 @@ TEST(DiffOutput, IdenticalFilesSayIdenticalInEveryFormat) {
     EXPECT_NE(esi::render_diff_markdown(*diff.result, {"a.xml", "b.xml"}).find("identical"), std::string::npos);
 }
 
-TEST(DiffOutput, MarkdownEscapesTableCells) {
+TEST(DiffReport, MarkdownEscapesTableCells) {
     const std::string md = esi::render_diff_markdown(sample_result(), labels);
     // The vendor name in new.xml contains a pipe; it must not split the table row.
     EXPECT_NE(md.find("Example \\| Automation"), std::string::npos) << md;
 }
 
-TEST(DiffOutput, RenderingIsByteIdenticalOnRerun) {
+TEST(DiffReport, RenderingIsByteIdenticalOnRerun) {
     const esi::DiffResult a = sample_result();
     const esi::DiffResult b = sample_result();
     EXPECT_EQ(esi::render_diff_text(a, labels), esi::render_diff_text(b, labels));
@@ -109,7 +109,7 @@ TEST(DiffOutput, RenderingIsByteIdenticalOnRerun) {
 
 #include "diff_fixture.hpp"
 
-TEST(DiffOutputText, LongOrMultiLineTextStaysOnOneShortLine) {
+TEST(DiffReportText, LongOrMultiLineTextStaysOnOneShortLine) {
     const std::string long_text(500, 'x');
     const std::string old_xml =
         esi::test::edit(esi::test::diff_base, "</Electrical></Info>", "</Electrical><Note>a</Note></Info>");
