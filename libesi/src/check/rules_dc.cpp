@@ -2,8 +2,8 @@
 //
 // AssignActivate is written by the master to ESC registers 0x0980 (low byte, cyclic unit control)
 // and 0x0981 (high byte, activation): 0x0981 bit 0 activates the cyclic unit, bit 1 generates
-// SYNC0, bit 2 SYNC1 (Beckhoff ESC datasheet section II, "Distributed Clocks"; domain note S26).
-// The usual values: #x0000 free run, #x0300 SYNC0, #x0700 SYNC0 + SYNC1, Beckhoff #x0730.
+// SYNC0, bit 2 SYNC1 (Beckhoff ESC datasheet section II, "Distributed Clocks"). The usual values,
+// as Beckhoff's catalogues write them: #x0000 free run, #x0300 SYNC0, #x0700 SYNC0 + SYNC1, #x0730.
 #include <string>
 #include <unordered_map>
 

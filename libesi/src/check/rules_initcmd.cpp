@@ -56,8 +56,8 @@ void for_each_init_cmd(const EsiDocument& document, F&& f) {
 }
 
 // EtherCAT state machine transitions (ETG.1000.6 §6.4 / ETG.1000.4 ESM): Init, Pre-Operational,
-// Safe-Operational, Operational, Bootstrap. The servo manuals' Tabelle 8 lists the nine without
-// bootstrap.
+// Safe-Operational, Operational, Bootstrap. The item C series and Afag SE-Power EtherCAT manuals
+// list the nine without bootstrap (Tabelle 8).
 constexpr std::string_view esm_transitions[] = {"IP", "PI", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "IB", "BI"};
 // The transitions schema 1.17 allows for InitCmds of every protocol (AoE, EoE, CoE, SoE, module CoE).
 constexpr std::string_view init_cmd_transitions[] = {"IP", "PS", "SO", "SP", "OP", "OS"};
