@@ -111,6 +111,15 @@ TEST(RuleCatalogue, IdsAreUniqueKebabCaseWithKnownAreaPrefix) {
     }
 }
 
+// Rationales cite what a user can open: ETG documents, public projects and issues, vendor manuals
+// by name and section. These phrases point at notes and data sets only the authors have.
+TEST(RuleCatalogue, RationalesCiteNoInternalNotes) {
+    static const std::string_view internal[] = {"domain note", "gen_od", "seed ", "servo manuals", "the corpus"};
+    for (const auto& rule : esi::all_rules())
+        for (const auto phrase : internal)
+            EXPECT_EQ(rule.rationale.find(phrase), std::string_view::npos) << rule.id << " cites '" << phrase << "'";
+}
+
 // One rule in one place (libesi/src/check/areas.hpp): each rule's Rule constant is defined once,
 // in a rules file of its area (rules_<area>.cpp or rules_<area>_<topic>.cpp), where its check
 // function is. Front-end rules without a check (xml-…, lint-directive) may live in any rules file.

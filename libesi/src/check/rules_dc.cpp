@@ -50,8 +50,9 @@ constexpr Rule dc_opmode_name{
     .summary = "Dc OpMode without Name or with a repeated Name",
     .rationale =
         "Masters list the operation modes by Name and modules select theirs through DcOpModeName, so every OpMode "
-        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required; domain note S26). "
-        "Beckhoff's EL1262 description in the corpus has two OpModes named DcSync in one device.",
+        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required). Beckhoff's EL1262 "
+        "description (Beckhoff EL1xxx.xml in DiamondLightSource/ethercat etc/xml/) has two OpModes named DcSync in "
+        "one device.",
     .bad_example = "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC</Name>...</OpMode>",
     .good_example = "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC-Sync01</Name>...</OpMode>",
     .check = check_name,
@@ -95,10 +96,11 @@ constexpr Rule dc_assign_activate{
     .rationale =
         "The high byte of AssignActivate goes to ESC register 0x0981: bit 0 activates the cyclic unit, bit 1 SYNC0, "
         "bit 2 SYNC1. SYNC0/SYNC1 bits without bit 0 (e.g. #x0200 instead of #x0300) generate no signal, so a device "
-        "that waits for SYNC0 does not reach SAFE-OP (Beckhoff ESC datasheet section II, register 0x0981; domain note "
-        "S26: #x0300 SYNC0, #x0700 SYNC0+SYNC1; STÖBER ECS 5000 manual §11.5: with synchronisation active the "
-        "inverter stays in PRE-OP without a valid SYNC0 cycle). A missing AssignActivate or one wider than 16 bits "
-        "is reported too.",
+        "that waits for SYNC0 does not reach SAFE-OP (Beckhoff ESC datasheet section II, register 0x0981; Beckhoff's "
+        "catalogues write #x0300 for SYNC0 and #x0700 for SYNC0+SYNC1, e.g. Beckhoff EL4xxx.xml in "
+        "DiamondLightSource/ethercat etc/xml/; STÖBER ECS 5000 manual §11.5: with synchronisation active the inverter "
+        "stays in PRE-OP without a valid SYNC0 cycle). A missing AssignActivate or one wider than 16 bits is reported "
+        "too.",
     .bad_example = "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0200</AssignActivate></OpMode>",
     .good_example = "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0300</AssignActivate></OpMode>",
     .check = check_assign_activate,

@@ -223,10 +223,11 @@ constexpr Rule deprecated_obsolete{
     .summary = "Other elements and attributes the schema marks obsolete",
     .rationale =
         "Schema 1.17 annotates further items as 'obsolete' that the published CTT TF-1300 group 5 list does not name "
-        "(the posted list is truncated after 5-10): Type@TcSmClass, Type@DownloadModuleList, Sm@Watchdog (use ControlByte bit 6), "
-        "Sm@FixedAssignment, CoE@DS402Channels (seen in the servo manuals' §7 example), CoE/Object, CoE "
-        "InitCmd@Fixed and Dc/OpMode/Sm/SyncType, CycleTime, ShiftTime. Tools ignore them; reported as information "
-        "so that a file can be cleaned up before the next schema drops them.",
+        "(the posted list is truncated after 5-10): Type@TcSmClass, Type@DownloadModuleList, Sm@Watchdog (use "
+        "ControlByte bit 6), Sm@FixedAssignment, CoE@DS402Channels (seen in the §7 example of the item C series and "
+        "Afag SE-Power EtherCAT manuals), CoE/Object, CoE InitCmd@Fixed and Dc/OpMode/Sm/SyncType, CycleTime, "
+        "ShiftTime. Tools ignore them; reported as information so that a file can be cleaned up before the next "
+        "schema drops them.",
     .bad_example = "<CoE DS402Channels=\"1\" PdoAssign=\"true\"/>",
     .good_example = "<CoE PdoAssign=\"true\"/>",
     .check = check_obsolete,

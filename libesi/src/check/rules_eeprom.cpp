@@ -45,10 +45,10 @@ constexpr Rule eeprom_data_and_structured{
     .default_severity = Severity::error,
     .summary = "Eeprom with both a raw Data image and structured elements",
     .rationale =
-        "Eeprom is a choice: either Data, the complete SII image used as it is, or ByteSize/ConfigData/BootStrap/"
-        "Category from which a tool builds the image (ETG.2000 EepromType; leducp/KickCAT rejects 'Eeprom with both "
-        "Data and ByteSize'; domain note S27). With both, one half is silently ignored, and which half differs between "
-        "tools.",
+        "Eeprom is a choice: either Data, the complete SII image used as it is, or "
+        "ByteSize/ConfigData/BootStrap/Category from which a tool builds the image (ETG.2000 EepromType; "
+        "leducp/KickCAT rejects 'Eeprom with both Data and ByteSize'). With both, one half is silently ignored, and "
+        "which half differs between tools.",
     .bad_example =
         "<Eeprom><Data>050E0344...</Data><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
     .good_example = "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E03440A000000</ConfigData></Eeprom>",
@@ -202,9 +202,9 @@ constexpr Rule eeprom_boot_strap{
     .summary = "Eeprom BootStrap that is not exactly 8 bytes",
     .rationale =
         "BootStrap holds SII words 0x14-0x17: bootstrap receive mailbox offset and size, send mailbox offset and size "
-        "(ETG.2010; domain note S9). Another length shifts or truncates these words, and firmware that compares them "
-        "with its boot constants refuses BOOT (ALERR_INVALIDBOOTMBXCONFIG, the gen_od review; "
-        "kubabuda/EEPROM_generator #3).",
+        "(ETG.2010; Beckhoff ESC datasheet section I, Table 38 SII EEPROM content). Another length shifts or "
+        "truncates these words, and firmware that compares them with its boot constants refuses BOOT (SOES soes/esc.c "
+        "ESC_startmbxboot: AL status 0x0015 ALERR_INVALIDBOOTMBXCONFIG; kubabuda/EEPROM_generator #3).",
     .bad_example = "<BootStrap>00108000801080</BootStrap>",
     .good_example = "<BootStrap>0010800080108000</BootStrap>",
     .check = check_boot_strap,
@@ -236,7 +236,7 @@ constexpr Rule eeprom_category{
     .rationale =
         "An extra SII category needs its type (CatNo, the category header word) and its content (Data, DataString, "
         "DataUINT or DataUDINT); without either, tools cannot write it (ETG.2000 EepromType Category; ETG.2010 "
-        "category layout; leducp/KickCAT 'Eeprom Category without payload'; domain note S27).",
+        "category layout; leducp/KickCAT 'Eeprom Category without payload').",
     .bad_example = "<Category><CatNo>2048</CatNo></Category>",
     .good_example = "<Category><CatNo>2048</CatNo><Data>0100</Data></Category>",
     .check = check_category,

@@ -150,10 +150,11 @@ constexpr Rule fmmu_missing{
     .summary = "Process data without an FMMU of that direction",
     .rationale =
         "Process data reaches the master's logical image only through an FMMU; the schema leaves Fmmu optional, so a "
-        "generator that forgets it produces a schema-valid file whose device never exchanges process data (the "
-        "gen_od review in the domain notes: 'missing <Fmmu> ... not caught by schema validation'; CTT TF-1300 3-3 "
-        "counts them). The rule fires once per direction for the first SM that carries data (a DefaultSize or "
-        "default PDOs) without an FMMU of its kind.",
+        "generator that forgets it produces a schema-valid file whose device never exchanges process data (ETG.2000 "
+        "DeviceType: Fmmu minOccurs 0; the SII FMMU category of ETG.2010 is built from these elements, and "
+        "ethercrab-rs/ethercrab #287 shows a master guessing FMMUs for an EEPROM that lists too few; CTT TF-1300 3-3 "
+        "counts them). The rule fires once per direction for the first SM that carries data (a DefaultSize or default "
+        "PDOs) without an FMMU of its kind.",
     .bad_example =
         "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"1\" Enable=\"1\">Outputs</Sm> (no Fmmu)",
     .good_example =

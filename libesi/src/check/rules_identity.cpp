@@ -151,9 +151,9 @@ constexpr Rule identity_vendor_id_zero{
     .summary = "Vendor Id 0 is not an assigned vendor id",
     .rationale =
         "Vendor ids are assigned by the EtherCAT Technology Group (1 is the ETG itself, 2 Beckhoff); 0 is not "
-        "assigned to anybody. Generator templates and prototypes ship with 0 (the kubabuda/EEPROM_generator default "
-        "project in the corpus), and then every such device looks alike to a master that selects descriptions by "
-        "(Vendor Id, ProductCode, RevisionNo) (ETG.2000 VendorType Id; ETG.2010 SII words 0x08-0x09).",
+        "assigned to anybody. Generator templates and prototypes ship with 0 (the default project of "
+        "kubabuda/EEPROM_generator, ref/gen.xml), and then every such device looks alike to a master that selects "
+        "descriptions by (Vendor Id, ProductCode, RevisionNo) (ETG.2000 VendorType Id; ETG.2010 SII words 0x08-0x09).",
     .bad_example = "<Vendor><Id>0</Id><Name>Prototype</Name></Vendor>",
     .good_example = "<Vendor><Id>#x00000E4A</Id><Name>Example GmbH</Name></Vendor>",
     .check = check_vendor_id_zero,
@@ -313,8 +313,8 @@ constexpr Rule identity_duplicate{
     .summary = "Two devices of one file with the same ProductCode and RevisionNo",
     .rationale =
         "A master picks the description whose (ProductCode, RevisionNo) matches the SII; with two candidates it takes "
-        "one of them, and which one differs between tools. Each variant needs its own identity (the gen_od review "
-        "in the domain notes: 'every variant has a distinct identity'; leducp/KickCAT PR #386/#426 select the device in a "
+        "one of them, and which one differs between tools. Each variant needs its own identity (ETG.2010 SII words "
+        "0x0A-0x0D hold exactly ProductCode and RevisionNo; leducp/KickCAT PR #386/#426 select the device in a "
         "multi-device file by product code and revision).",
     .bad_example =
         "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\">EX-DIO-8</Type> ... <Type ProductCode=\"#x1001\" "
@@ -404,10 +404,11 @@ constexpr Rule identity_1018_revision_stale{
     .summary = "0x1018:03 revision default differs from Device/Type@RevisionNo",
     .rationale =
         "0x1018:03 reports the revision the firmware runs; its default in the description should be the RevisionNo of "
-        "the Type it belongs to (CTT TF-1300 4-1 compares them). Catalogues that share one dictionary across revisions "
-        "often keep an older revision here: the master still matches the device by SII and Type, so this is a warning, "
-        "unlike a wrong vendor id or product code (identity-1018-mismatch). Seen in about 60 Beckhoff terminal "
-        "descriptions of the corpus.",
+        "the Type it belongs to (CTT TF-1300 4-1 compares them). Catalogues that share one dictionary across "
+        "revisions often keep an older revision here: the master still matches the device by SII and Type, so this is "
+        "a warning, unlike a wrong vendor id or product code (identity-1018-mismatch). Beckhoff's own catalogues do "
+        "this for about 60 terminals (e.g. Beckhoff EL3xxx.xml and EL66xx.xml in DiamondLightSource/ethercat "
+        "etc/xml/).",
     .bad_example =
         "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\"> ... <SubItem><Name>Revision</Name><Info><DefaultValue>#x00020000</DefaultValue>",
     .good_example =
@@ -454,8 +455,7 @@ constexpr Rule identity_name_lcid_duplicate{
     .rationale =
         "Names are localized by LcId (default 1033, English); a tool shows one Name per language, so a second Name "
         "with the same LcId is dropped or overrides the first depending on the tool, and SII writers emit only one "
-        "(ETG.2000 NameType; domain note S29 'at most one name per LcId'; ethercat-rs/ethercat-esi #1 broke on "
-        "repeated Name elements).",
+        "(ETG.2000 NameType; ethercat-rs/ethercat-esi #1 broke on repeated Name elements).",
     .bad_example = "<Name LcId=\"1033\">EX-DIO-8</Name><Name>EX-DIO-8 8 inputs</Name>",
     .good_example = "<Name LcId=\"1033\">EX-DIO-8</Name><Name LcId=\"1031\">EX-DIO-8 8 Eingänge</Name>",
     .check = check_name_lcid_duplicate,

@@ -105,9 +105,9 @@ constexpr Rule initcmd_transition_unknown{
     .rationale =
         "A Transition names the state change at which the master sends the command: two letters from I (Init), P "
         "(Pre-Operational), S (Safe-Operational), O (Operational), B (Bootstrap), e.g. PS = Pre-Op -> Safe-Op "
-        "(ETG.1000.6 state machine; ETG.2000 InitCmd; servo manuals §6.2 Tabelle 8, §6.7.4). Anything else, including "
-        "lower case, matches no transition, so the master never sends the command; the schema enumeration rejects it "
-        "(leducp/KickCAT reports 'unknown transition').",
+        "(ETG.1000.6 state machine; ETG.2000 InitCmd; the item C series and Afag SE-Power EtherCAT manuals, §6.2 "
+        "Tabelle 8 and §6.7.4). Anything else, including lower case, matches no transition, so the master never sends "
+        "the command; the schema enumeration rejects it (leducp/KickCAT reports 'unknown transition').",
     .bad_example =
         "<InitCmd><Transition>PO</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
     .good_example =
@@ -138,12 +138,13 @@ constexpr Rule initcmd_transition_not_allowed{
     .default_severity = Severity::warning,
     .summary = "InitCmd at a transition the schema does not allow (PI, SI, OI, IB, BI)",
     .rationale =
-        "Schema 1.17 allows InitCmd transitions IP, PS, SO, SP, OP and OS for every protocol (AoE, EoE, CoE, SoE). The "
-        "servo manuals list all nine state-machine transitions (IP, PI, PS, SP, SO, OS, OP, SI, OI; Tabelle 8/15) "
-        "because their Transition column refers to the state machine, but the transitions down to Init (PI, SI, OI) "
-        "are not start-up steps, and Bootstrap transitions (IB, BI) run on the bootstrap mailbox, which carries FoE "
-        "only. Masters that follow the schema never send such a command, so it is reported as a warning rather than "
-        "an error: the value is a real transition, but the command silently does nothing.",
+        "Schema 1.17 allows InitCmd transitions IP, PS, SO, SP, OP and OS for every protocol (AoE, EoE, CoE, SoE). "
+        "The manuals of the item C series and Afag SE-Power servo controllers list all nine state-machine transitions "
+        "(IP, PI, PS, SP, SO, OS, OP, SI, OI; Tabelle 8 and 15) because their Transition column refers to the state "
+        "machine, but the transitions down to Init (PI, SI, OI) are not start-up steps, and Bootstrap transitions "
+        "(IB, BI) run on the bootstrap mailbox, which carries FoE only. Masters that follow the schema never send "
+        "such a command, so it is reported as a warning rather than an error: the value is a real transition, but the "
+        "command silently does nothing.",
     .bad_example =
         "<InitCmd><Transition>PI</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
     .good_example =
@@ -202,9 +203,9 @@ constexpr Rule initcmd_data_hex{
     .summary = "InitCmd Data that is not even-length hexBinary",
     .rationale =
         "InitCmd Data is xs:hexBinary: two hex digits per byte, no prefix, written in the byte order of the SDO "
-        "(little-endian for numbers). An odd number of digits has no byte reading: the servo manuals' own example "
-        "writes the 16-bit Controlword 0x6040 with `<Data>0</Data>` (servo manuals §7), which tools pad, truncate or "
-        "reject differently (leducp/KickCAT: 'odd-length hex binary').",
+        "(little-endian for numbers). An odd number of digits has no byte reading: the example in §7 of the item C "
+        "series and Afag SE-Power EtherCAT manuals writes the 16-bit Controlword 0x6040 with `<Data>0</Data>`, which "
+        "tools pad, truncate or reject differently (leducp/KickCAT: 'odd-length hex binary').",
     .bad_example =
         "<InitCmd><Transition>PS</Transition><Index>#x6040</Index><SubIndex>0</SubIndex><Data>0</Data></InitCmd>",
     .good_example =
@@ -260,10 +261,11 @@ constexpr Rule initcmd_target_missing{
     .rationale =
         "A CoE InitCmd is an SDO download to Index:SubIndex. When the device's Dictionary does not have the target, "
         "the slave answers with abort 0x06020000 or 0x06090011 and the master stops the state change "
-        "(OpenEtherCATsociety/SOEM #402 'index:0016.00 error:06020000 The object does not exist'; servo manuals D7). "
-        "Checked only when the device (or module) has a Dictionary; commands whose index depends on the slot are "
-        "skipped. A warning, not an error: ESI dictionaries are offline copies that vendors sometimes trim (Beckhoff "
-        "AX2000 writes 0x60C2 at start-up but lists no 0x60C2), so either the command or the dictionary is wrong.",
+        "(OpenEtherCATsociety/SOEM #402 'index:0016.00 error:06020000 The object does not exist'; ETG.1000.6 SDO "
+        "abort codes). Checked only when the device (or module) has a Dictionary; commands whose index depends on the "
+        "slot are skipped. A warning, not an error: ESI dictionaries are offline copies that vendors sometimes trim "
+        "(Beckhoff AX2000 writes 0x60C2 at start-up but lists no 0x60C2), so either the command or the dictionary is "
+        "wrong.",
     .bad_example =
         "<InitCmd><Transition>PS</Transition><Index>#x6061</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd> "
         "(no object 0x6061)",
@@ -329,8 +331,9 @@ constexpr Rule initcmd_data_length{
         "An SDO download must carry exactly the size of a numeric target; the slave refuses other lengths with abort "
         "0x06070012 (too long) or 0x06070013 (too short) and the master stops the start-up (ETG.1000.6 SDO abort "
         "codes). Strings and domains may be shorter. With CompleteAccess the data may fill the whole object, so it is "
-        "compared with the object's BitSize. Checked when the device has a Dictionary (servo manuals §7: Controlword, "
-        "16 bits, written with a 1-digit Data; R12 limits their SDOs to 4 bytes).",
+        "compared with the object's BitSize. Checked when the device has a Dictionary (the item C series and Afag "
+        "SE-Power EtherCAT manuals write the 16-bit Controlword with a 1-digit Data in §7 and limit SDOs to 4 bytes "
+        "in §6.3 and Tabelle 15).",
     .bad_example =
         "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>0300</Data></InitCmd> "
         "(0x6060 is SINT)",

@@ -65,8 +65,9 @@ constexpr Rule mailbox_sm_missing{
     .summary = "A Mailbox without MBoxOut and MBoxIn SyncManagers",
     .rationale =
         "Mailbox protocols travel through the standard mailbox: SM0 (MBoxOut, master -> slave) and SM1 (MBoxIn, slave "
-        "-> master), whose addresses and sizes also fill SII words 0x18-0x1B (ETG.2010; SOES tutorial; servo manuals "
-        "§6.1.1 R1). A Mailbox element without them advertises protocols the master cannot reach.",
+        "-> master), whose addresses and sizes also fill SII words 0x18-0x1B (ETG.2010; SOES tutorial; the item C "
+        "series and Afag SE-Power EtherCAT manuals, §6.1.1 and Tabelle 5). A Mailbox element without them advertises "
+        "protocols the master cannot reach.",
     .bad_example = "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Mailbox DataLinkLayer=\"true\"><CoE/></Mailbox>",
     .good_example =
         "<Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... ControlByte=\"#x22\">MBoxIn</Sm>...<Mailbox "

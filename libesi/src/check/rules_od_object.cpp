@@ -208,8 +208,8 @@ constexpr Rule od_mandatory_object{
     .rationale =
         "Every CoE device has Device type (0x1000) and Identity (0x1018) (ETG.1000.6; CiA 301); the conformance test "
         "tool reads both (CTT TF-2301) and masters compare 0x1018 with the ESI identity. When the ESI describes the "
-        "Dictionary, it must describe these objects too (SOES tutorial; domain notes S22). Devices whose ESI has no "
-        "Dictionary are not checked.",
+        "Dictionary, it must describe these objects too (SOES tutorial; kubabuda/EEPROM_generator adds both to every "
+        "dictionary it generates). Devices whose ESI has no Dictionary are not checked.",
     .bad_example = "<Mailbox><CoE/></Mailbox> and a Dictionary with objects but no #x1018",
     .good_example = "<Mailbox><CoE/></Mailbox> and a Dictionary with #x1000 and #x1018",
     .check = check_mandatory_object,
@@ -235,9 +235,9 @@ constexpr Rule od_duplicate_object{
     .default_severity = Severity::error,
     .summary = "Two Objects of one Dictionary share an index",
     .rationale =
-        "An index addresses one object (ETG.1000.6 object dictionary). With two declarations a master shows one and the "
-        "other is unreachable; slave tables generated from the ESI have two entries for one index and SDO lookups such as "
-        "SOES's sorted SDO_findobject pick either (domain notes S25).",
+        "An index addresses one object (ETG.1000.6 object dictionary). With two declarations a master shows one and "
+        "the other is unreachable; slave tables generated from the ESI have two entries for one index and SDO lookups "
+        "such as SDO_findobject in SOES soes/esc_coe.c (a binary search over the sorted list) pick either.",
     .bad_example = "<Object><Index>#x2000</Index>…</Object><Object><Index>#x2000</Index>…</Object>",
     .good_example = "<Object><Index>#x2000</Index>…</Object><Object><Index>#x2001</Index>…</Object>",
     .check = check_duplicate_object,
@@ -286,10 +286,10 @@ constexpr Rule od_default_length{
     .default_severity = Severity::warning,
     .summary = "DefaultData/MinData/MaxData whose length differs from the entry's size",
     .rationale =
-        "DefaultData, MinData and MaxData are the value's bytes as an SDO transfers them (ETG.2000 ObjectInfoType), so "
-        "they have exactly the entry's size in bytes; strings and byte arrays may be shorter than their maximum. A "
-        "longer or shorter value is truncated or padded differently by each tool (KickCAT 'data default size mismatch'; "
-        "kubabuda/EEPROM_generator #2 on string lengths; domain notes S20). DefaultString must fit STRING(n).",
+        "DefaultData, MinData and MaxData are the value's bytes as an SDO transfers them (ETG.2000 ObjectInfoType), "
+        "so they have exactly the entry's size in bytes; strings and byte arrays may be shorter than their maximum. A "
+        "longer or shorter value is truncated or padded differently by each tool (KickCAT 'data default size "
+        "mismatch'; kubabuda/EEPROM_generator #2 on string lengths). DefaultString must fit STRING(n).",
     .bad_example =
         "<Object><Index>#x1018</Index>… <SubItem><Name>Vendor ID</Name><Info><DefaultData>E40A</DefaultData>…",
     .good_example =

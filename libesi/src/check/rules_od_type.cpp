@@ -129,11 +129,11 @@ constexpr Rule od_nonstandard_type_name{
     .default_severity = Severity::error,
     .summary = "A type named with a non-standard spelling (UINT16 instead of UINT)",
     .rationale =
-        "ESI type names are the IEC 61131-3 style names of ETG.2000 and ET9300 Table 22 (USINT, UINT, UDINT, SINT, INT, "
-        "DINT, BOOL, REAL, …). C-style spellings such as UINT8/UINT16/UINT32 or CoE names such as UNSIGNED16 are not "
-        "understood by TwinCAT or the conformance test tool; generators such as pollen-robotics/pyesi emit them (domain "
-        "notes S30). The message names the standard spelling. A Dictionary may define a DataType of such a name; "
-        "only names that nothing defines are reported.",
+        "ESI type names are the IEC 61131-3 style names of ETG.2000 and ET9300 Table 22 (USINT, UINT, UDINT, SINT, "
+        "INT, DINT, BOOL, REAL, …). C-style spellings such as UINT8/UINT16/UINT32 or CoE names such as UNSIGNED16 are "
+        "not understood by TwinCAT or the conformance test tool; generators such as pollen-robotics/pyesi emit them. "
+        "The message names the standard spelling. A Dictionary may define a DataType of such a name; only names that "
+        "nothing defines are reported.",
     .bad_example = "<Object><Index>#x6041</Index><Type>UINT16</Type><BitSize>16</BitSize></Object>",
     .good_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize></Object>",
     .check = check_nonstandard_type_name,
@@ -173,9 +173,9 @@ constexpr Rule od_type_cycle{
     .default_severity = Severity::error,
     .summary = "DataTypes whose BaseType chain loops",
     .rationale =
-        "A DataType refers to its base through BaseType; a chain that comes back to where it started has no base at all, "
-        "and a naive resolver recurses forever (KickCAT test throws_on_basetype_cycle limits the depth for this reason; "
-        "domain notes S21).",
+        "A DataType refers to its base through BaseType; a chain that comes back to where it started has no base at "
+        "all, and a naive resolver recurses forever (KickCAT test throws_on_basetype_cycle limits the depth for this "
+        "reason).",
     .bad_example =
         "<DataType><Name>DT_A</Name><BaseType>DT_B</BaseType>…</DataType><DataType><Name>DT_B</Name><BaseType>DT_A</BaseType>…",
     .good_example = "<DataType><Name>DT_A</Name><BaseType>UINT</BaseType><BitSize>16</BitSize></DataType>",
@@ -236,9 +236,9 @@ constexpr Rule od_subitem_layout{
     .summary = "DataType SubItems that overlap or extend past the DataType's BitSize",
     .rationale =
         "The SubItems of a record type are laid out by BitOffs and BitSize inside the type's BitSize (ETG.2000 "
-        "DataTypeType). Overlapping SubItems make two sub-entries share bits, and a SubItem past the end reads beyond the "
-        "object; complete-access SDO transfers and generated structs then disagree with the device (domain notes S21; "
-        "KickCAT layout checks). Overlaps are checked between sub-indices (SubItems with SubIdx) only, since SoE "
+        "DataTypeType). Overlapping SubItems make two sub-entries share bits, and a SubItem past the end reads beyond "
+        "the object; complete-access SDO transfers and generated structs then disagree with the device (ETG.1000.6 "
+        "SDO complete access). Overlaps are checked between sub-indices (SubItems with SubIdx) only, since SoE "
         "dictionaries describe unions with overlapping structure members; one finding per DataType.",
     .bad_example =
         "<DataType><Name>DT2000</Name><BitSize>32</BitSize><SubItem><Name>A</Name><Type>UINT</Type><BitSize>16</BitSize>"
@@ -286,10 +286,11 @@ constexpr Rule od_array_size{
     .default_severity = Severity::error,
     .summary = "An array DataType whose ArrayInfo disagrees with its BitSize",
     .rationale =
-        "An array type's BitSize is the number of elements (ArrayInfo/Elements) times the size of its BaseType (ETG.2000 "
-        "ArrayInfo). When they disagree, the number of sub-indices or their offsets is wrong; KickCAT rejects such types "
-        "('array BitSize not divisible by elements', test throws_on_array_bitsize_not_divisible_by_elements) (domain notes "
-        "S20, S21). Elements 0 with BitSize 0 (an empty PDO assignment list) is consistent.",
+        "An array type's BitSize is the number of elements (ArrayInfo/Elements) times the size of its BaseType "
+        "(ETG.2000 ArrayInfo). When they disagree, the number of sub-indices or their offsets is wrong; KickCAT "
+        "rejects such types ('array BitSize not divisible by elements', test "
+        "throws_on_array_bitsize_not_divisible_by_elements). Elements 0 with BitSize 0 (an empty PDO assignment list) "
+        "is consistent.",
     .bad_example =
         "<DataType><Name>DT1C12ARR</Name><BaseType>UINT</BaseType><BitSize>48</BitSize><ArrayInfo><LBound>1</LBound>"
         "<Elements>2</Elements></ArrayInfo></DataType>",
@@ -337,8 +338,8 @@ constexpr Rule od_bitsize{
     .rationale =
         "BitSize states the size of the object or sub-item; the type states it too (UINT is 16 bits, STRING(10) 80, a "
         "DataType its own BitSize; ET9300 Table 22, ETG.2000 ObjectType/BitSize). When they differ, SDO uploads, "
-        "complete access and generated object tables disagree about the object's length (domain notes S20). A DataType "
-        "named like a basic type (Beckhoff lists <DataType><Name>UINT</Name><BitSize>16</BitSize>) must have that size.",
+        "complete access and generated object tables disagree about the object's length. A DataType named like a "
+        "basic type (Beckhoff lists <DataType><Name>UINT</Name><BitSize>16</BitSize>) must have that size.",
     .bad_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>32</BitSize></Object>",
     .good_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize></Object>",
     .check = check_bitsize,

@@ -120,11 +120,13 @@ constexpr Rule pdo_assign_default{
     .default_severity = Severity::warning,
     .summary = "The default of 0x1C12/0x1C13 differs from the PDOs assigned by Sm=",
     .rationale =
-        "PDOs with Sm=\"n\" are assigned to SM n by default; the Dictionary states the same assignment as the default of "
-        "object 0x1C10+n (0x1C12 for SM2, 0x1C13 for SM3; ETG.1000.6). A master that uploads the assignment (PdoUpload) "
-        "and one that takes it from the ESI then build different process images; SSC-generated firmware with byte-swapped "
-        "or stale 0x1C12 defaults is a classic field failure (SOEM #402; domain notes S23). Modular devices are skipped: "
-        "their assignment grows with the plugged modules. The order is not compared, only which PDOs are assigned.",
+        "PDOs with Sm=\"n\" are assigned to SM n by default; the Dictionary states the same assignment as the default "
+        "of object 0x1C10+n (0x1C12 for SM2, 0x1C13 for SM3; ETG.1000.6). A master that uploads the assignment "
+        "(PdoUpload) and one that takes it from the ESI then build different process images; SSC-generated firmware "
+        "with byte-swapped or stale 0x1C12 defaults is a classic field failure (OpenEtherCATsociety/SOEM #402: "
+        "'reference to the PDO mapping objects is a uint16_t but the bytes are swapped'). Modular devices are "
+        "skipped: their assignment grows with the plugged modules. The order is not compared, only which PDOs are "
+        "assigned.",
     .bad_example = "<RxPdo Sm=\"2\"><Index>#x1600</Index>… with 0x1C12 default listing #x1601",
     .good_example = "<RxPdo Sm=\"2\"><Index>#x1600</Index>… with 0x1C12 default listing #x1600",
     .check = check_assign_default,
@@ -180,9 +182,10 @@ constexpr Rule pdo_mapping_default{
     .summary = "A mapping object's default (0x16xx/0x1Axx) differs from the PDO's entries",
     .rationale =
         "The default value of mapping object 0x16xx/0x1Axx sub-index k is the k-th entry of the PDO encoded as "
-        "index<<16 | subindex<<8 | bit length (ETG.1000.6; STÖBER manual §7.1.1 shows the byte layout). When it disagrees "
-        "with the ESI entries, a master that reads the mapping from the device and one that trusts the ESI exchange "
-        "differently laid out data (domain notes S23; KickCAT synthesises these objects from the PDOs for that reason).",
+        "index<<16 | subindex<<8 | bit length (ETG.1000.6; STÖBER ECS 5000 EtherCAT manual §7.1.1 shows the byte "
+        "layout). When it disagrees with the ESI entries, a master that reads the mapping from the device and one "
+        "that trusts the ESI exchange differently laid out data (leducp/KickCAT synthesises these objects from the "
+        "PDOs when a Dictionary lacks them).",
     .bad_example =
         "<RxPdo><Index>#x1600</Index><Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>8</BitLen>… with 0x1600:01 "
         "default #x70000110",

@@ -76,9 +76,9 @@ constexpr Rule pdo_entry_type_unknown{
     .summary = "A PDO entry's DataType is not an ESI type name",
     .rationale =
         "Masters type process variables from the entry's DataType. A name that is neither a basic ESI type (ETG.2000, "
-        "ET9300 Table 22: BOOL, USINT, UINT, UDINT, …) nor defined in the Dictionary cannot be typed; generators such as "
-        "pollen-robotics/pyesi write C-style names (UINT8, UINT16) that TwinCAT does not know (domain notes S30). The "
-        "message names the standard spelling when there is one.",
+        "ET9300 Table 22: BOOL, USINT, UINT, UDINT, …) nor defined in the Dictionary cannot be typed; generators such "
+        "as pollen-robotics/pyesi write C-style names (UINT8, UINT16) that TwinCAT does not know. The message names "
+        "the standard spelling when there is one.",
     .bad_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT16</DataType></Entry>",
     .good_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT</DataType></Entry>",
     .check = check_entry_type_unknown,
@@ -102,10 +102,10 @@ constexpr Rule pdo_entry_bitlen_type{
     .default_severity = Severity::error,
     .summary = "A PDO entry's BitLen disagrees with its DataType",
     .rationale =
-        "BitLen is the width the entry occupies in the process image and DataType says how to read it; UINT is 16 bits, "
-        "DINT 32, BITn n (ET9300 Table 22; ETG.1000.6 data types). A mismatch shifts every later variable in the image "
-        "or truncates the value. The seed servo manuals state it outright: BitLen 'muss immer dem Typ … entsprechen' "
-        "(Tabelle 14). Padding entries (Index 0) are exempt.",
+        "BitLen is the width the entry occupies in the process image and DataType says how to read it; UINT is 16 "
+        "bits, DINT 32, BITn n (ET9300 Table 22; ETG.1000.6 data types). A mismatch shifts every later variable in "
+        "the image or truncates the value. The manuals of the item C series and Afag SE-Power servo controllers state "
+        "it outright: BitLen 'muss immer dem Typ … entsprechen' (Tabelle 14). Padding entries (Index 0) are exempt.",
     .bad_example = "<Entry><Index>#x6064</Index><BitLen>16</BitLen><DataType>DINT</DataType></Entry>",
     .good_example = "<Entry><Index>#x6064</Index><BitLen>32</BitLen><DataType>DINT</DataType></Entry>",
     .check = check_entry_bitlen_type,
@@ -126,9 +126,10 @@ constexpr Rule pdo_padding_subindex{
     .default_severity = Severity::warning,
     .summary = "A padding entry (Index 0) with a SubIndex other than 0",
     .rationale =
-        "Gaps in a PDO are mapped as Index 0, SubIndex 0 with the gap's BitLen (SOEM #297: fillers are 0x0000:00; SSC "
-        "pad_x entries). A non-zero SubIndex turns the filler into the mapping entry 0x0000:nn, which some slave stacks "
-        "reject when the mapping is downloaded. Padding needs neither a DataType nor a Name (domain notes S18).",
+        "Gaps in a PDO are mapped as Index 0, SubIndex 0 with the gap's BitLen (OpenEtherCATsociety/SOEM #297: "
+        "fillers are 0x0000:00; SSC pad_x entries). A non-zero SubIndex turns the filler into the mapping entry "
+        "0x0000:nn, which some slave stacks reject when the mapping is downloaded. Padding needs neither a DataType "
+        "nor a Name.",
     .bad_example = "<Entry><Index>#x0</Index><SubIndex>1</SubIndex><BitLen>7</BitLen></Entry>",
     .good_example = "<Entry><Index>#x0</Index><BitLen>7</BitLen></Entry>",
     .check = check_padding_subindex,
@@ -160,10 +161,11 @@ constexpr Rule pdo_entry_alignment{
     .default_severity = Severity::warning,
     .summary = "An entry of 8 bits or more does not start on a byte boundary",
     .rationale =
-        "Values of a byte or more should start on a byte boundary of the PDO; many slave stacks copy process data byte-wise "
-        "and masters map variables to byte offsets, so a 16-bit value at bit 3 is either rejected or read shifted. The "
-        "SSC inserts padding for this reason ('append padding byte', cia402appl.h), and domain notes S18 list it. Only "
-        "the first misaligned entry of a PDO is reported, as the others follow from it.",
+        "Values of a byte or more should start on a byte boundary of the PDO; many slave stacks copy process data "
+        "byte-wise and masters map variables to byte offsets, so a 16-bit value at bit 3 is either rejected or read "
+        "shifted. The SSC inserts padding for this reason ('append padding byte … (basic process data has odd word "
+        "length)', SSC cia402appl.h). Only the first misaligned entry of a PDO is reported, as the others follow from "
+        "it.",
     .bad_example =
         "<Entry><Index>#x6000</Index><SubIndex>1</SubIndex><BitLen>1</BitLen>…</Entry><Entry><Index>#x6001</Index><BitLen>16</BitLen>…",
     .good_example =

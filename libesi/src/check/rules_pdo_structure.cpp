@@ -60,12 +60,13 @@ constexpr Rule pdo_index_range{
     .default_severity = Severity::error,
     .summary = "RxPdo index outside 0x1600-0x17FF or TxPdo index outside 0x1A00-0x1BFF",
     .rationale =
-        "The PDO index is the index of its mapping object, and ETG.1000.6 reserves 0x1600-0x17FF for RxPDO mapping and "
-        "0x1A00-0x1BFF for TxPDO mapping. A master that uploads or downloads the mapping (PdoAssign/PdoConfig) addresses "
-        "exactly that object, and the SOES tutorial and both seed servo manuals (§6.1.1, Tabelle 5: RxPDOs 0x1600-0x1603, "
-        "TxPDOs 0x1A00-0x1A03) rely on the split. An index in the other range usually means the PDO was declared with the "
-        "wrong element (domain notes S16). Only devices with CoE are checked: without CoE there are no mapping objects "
-        "and the index only names the PDO in the SII (SoE drives number their MDT/AT by IDN).",
+        "The PDO index is the index of its mapping object, and ETG.1000.6 reserves 0x1600-0x17FF for RxPDO mapping "
+        "and 0x1A00-0x1BFF for TxPDO mapping. A master that uploads or downloads the mapping (PdoAssign/PdoConfig) "
+        "addresses exactly that object, and the SOES tutorial and the item C series and Afag SE-Power EtherCAT "
+        "manuals (§6.1.1, Tabelle 5: RxPDOs 0x1600-0x1603, TxPDOs 0x1A00-0x1A03) rely on the split. An index in the "
+        "other range usually means the PDO was declared with the wrong element. Only devices with CoE are checked: "
+        "without CoE there are no mapping objects and the index only names the PDO in the SII (SoE drives number "
+        "their MDT/AT by IDN).",
     .bad_example = "<TxPdo Sm=\"3\"><Index>#x1600</Index><Name>Inputs</Name>…</TxPdo>",
     .good_example = "<TxPdo Sm=\"3\"><Index>#x1A00</Index><Name>Inputs</Name>…</TxPdo>",
     .check = check_index_range,
@@ -90,9 +91,9 @@ constexpr Rule pdo_sm_unknown{
     .default_severity = Severity::error,
     .summary = "A PDO is assigned (Sm=) to a SyncManager the device does not declare",
     .rationale =
-        "Sm=\"n\" assigns the PDO by default to SyncManager n of the device's Sm list (ETG.2000 PdoType@Sm). When SM n does "
-        "not exist the master has nowhere to put the process data: the SII PDO category points at a missing SM and TwinCAT "
-        "refuses the configuration (domain notes S16; ETG.2010 PDO category 'SyncM').",
+        "Sm=\"n\" assigns the PDO by default to SyncManager n of the device's Sm list (ETG.2000 PdoType@Sm). When SM "
+        "n does not exist the master has nowhere to put the process data: the SII PDO category points at a missing SM "
+        "and TwinCAT refuses the configuration (ETG.2010 PDO category 'SyncM').",
     .bad_example = "<Sm …>MBoxOut</Sm><Sm …>MBoxIn</Sm><Sm …>Outputs</Sm><RxPdo Sm=\"4\">…",
     .good_example = "<Sm …>MBoxOut</Sm><Sm …>MBoxIn</Sm><Sm …>Outputs</Sm><RxPdo Sm=\"2\">…",
     .check = check_sm_unknown,
@@ -134,10 +135,12 @@ constexpr Rule pdo_sm_direction{
     .default_severity = Severity::error,
     .summary = "An RxPdo on an input SM or a TxPdo on an output SM",
     .rationale =
-        "RxPDOs carry outputs (master to slave) and must sit in an Outputs SyncManager (ControlByte direction 'write', "
-        "usually SM2, #x24/#x64); TxPDOs carry inputs and belong to an Inputs SM (usually SM3, #x20). The seed servo "
-        "manuals fix SM2 for RxPDOs and SM3 for TxPDOs (§6.1.1, Tabelle 13) and note that copying the RxPdo example "
-        "literally would put a TxPdo on SM2. Process data on the wrong SM are never exchanged (domain notes S5, S16).",
+        "RxPDOs carry outputs (master to slave) and must sit in an Outputs SyncManager (ControlByte direction "
+        "'write', usually SM2, #x24/#x64); TxPDOs carry inputs and belong to an Inputs SM (usually SM3, #x20). The "
+        "item C series and Afag SE-Power EtherCAT manuals fix SM2 for RxPDOs and SM3 for TxPDOs (§6.1.1, Tabelle 13), "
+        "and their §6.7.3 says a TxPDO is configured like the RxPDO apart from its Name, which, taken literally, "
+        "keeps Sm=\"2\". Process data on the wrong SM are never exchanged (SOES tutorial SM table; "
+        "OpenEtherCATsociety/SOEM #247).",
     .bad_example = "<TxPdo Sm=\"2\"><Index>#x1A00</Index>…",
     .good_example = "<TxPdo Sm=\"3\"><Index>#x1A00</Index>…",
     .check = check_sm_direction,
@@ -250,11 +253,11 @@ constexpr Rule pdo_mapping_limits{
     .default_severity = Severity::error,
     .summary = "More than 255 entries in a PDO, BitLen 0 or above 255, or more than 255 PDOs",
     .rationale =
-        "The CoE mapping objects count their entries in the 8-bit sub-index 0 and store each entry's length in 8 bits; the "
-        "assignment objects 0x1C1x likewise list at most 255 PDOs (ETG.1000.6 PDO mapping/assignment; the SII PDO category "
-        "of ETG.2010 has one-byte counts too). KickCAT rejects such files ('>255 entries', 'BitLen > 255'); domain notes S19. "
-        "A BitLen of 0 on an object maps nothing; padding entries with BitLen 0 (a zero-width gap, found in a Beckhoff "
-        "module file of the corpus) are harmless and not reported.",
+        "The CoE mapping objects count their entries in the 8-bit sub-index 0 and store each entry's length in 8 "
+        "bits; the assignment objects 0x1C1x likewise list at most 255 PDOs (ETG.1000.6 PDO mapping/assignment; the "
+        "SII PDO category of ETG.2010 has one-byte counts too). leducp/KickCAT rejects such files ('>255 entries', "
+        "'BitLen > 255'). A BitLen of 0 on an object maps nothing; padding entries with BitLen 0 (a zero-width gap, "
+        "as in Beckhoff BKxxxxModules.xml in DiamondLightSource/ethercat etc/xml/) are harmless and not reported.",
     .bad_example = "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>512</BitLen>…</Entry>",
     .good_example = "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>32</BitLen>…</Entry>",
     .check = check_mapping_limits,

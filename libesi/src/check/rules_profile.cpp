@@ -82,10 +82,10 @@ constexpr Rule profile_max_pdos{
     .default_severity = Severity::error,
     .summary = "More PDOs in a direction than the device supports (limits.max_pdos)",
     .rationale =
-        "Devices support a fixed number of PDOs: the item/Afag servo controllers 'unterstützt vier Receive-PDOs (RxPDO) und "
-        "vier Transmit-PDOs (TxPDO)' (servo manuals §6.1.1, Tabelle 5), the STÖBER inverters 'vier PDO-Kanäle' (STÖBER "
-        "manual §7.1). An ESI that declares more offers PDOs the firmware does not have. Set with "
-        "`limits: { max_pdos: { rx: 4, tx: 4 } }`.",
+        "Devices support a fixed number of PDOs: the item/Afag servo controllers 'unterstützt vier Receive-PDOs "
+        "(RxPDO) und vier Transmit-PDOs (TxPDO)' (the item C series and Afag SE-Power EtherCAT manuals §6.1.1, "
+        "Tabelle 5), the STÖBER inverters 'vier PDO-Kanäle' (STÖBER ECS 5000 EtherCAT manual §7.1). An ESI that "
+        "declares more offers PDOs the firmware does not have. Set with `limits: { max_pdos: { rx: 4, tx: 4 } }`.",
     .bad_example = "limits: { max_pdos: { rx: 4 } } and five RxPdo elements",
     .good_example = "limits: { max_pdos: { rx: 4 } } and four RxPdo elements",
     .check = check_max_pdos,
@@ -115,9 +115,10 @@ constexpr Rule profile_pdo_index_range{
     .summary = "A PDO index outside the device's own index range (limits.pdo_index_ranges)",
     .rationale =
         "Beyond the general ETG ranges, a device implements only its own mapping objects: 0x1600-0x1603 and "
-        "0x1A00-0x1A03 for the item/Afag servo controllers (servo manuals §6.1.1, Tabelle 5, §6.1.2.5/6) and the STÖBER "
-        "inverters (STÖBER manual §10.1, A225-A228/A233-A236). A PDO at 0x1604 maps an object the device does not have. "
-        "Set with `limits: { pdo_index_ranges: { rx: [\"0x1600-0x1603\"], tx: [\"0x1A00-0x1A03\"] } }`.",
+        "0x1A00-0x1A03 for the item/Afag servo controllers (the item C series and Afag SE-Power EtherCAT manuals "
+        "§6.1.1, Tabelle 5, §6.1.2.5/6) and the STÖBER inverters (STÖBER ECS 5000 EtherCAT manual §10.1, "
+        "A225-A228/A233-A236). A PDO at 0x1604 maps an object the device does not have. Set with `limits: { "
+        "pdo_index_ranges: { rx: [\"0x1600-0x1603\"], tx: [\"0x1A00-0x1A03\"] } }`.",
     .bad_example = "pdo_index_ranges: { rx: [\"0x1600-0x1603\"] } and <RxPdo><Index>#x1604</Index>",
     .good_example = "pdo_index_ranges: { rx: [\"0x1600-0x1603\"] } and <RxPdo><Index>#x1603</Index>",
     .check = check_pdo_index_range,
@@ -143,10 +144,10 @@ constexpr Rule profile_max_entries{
     .default_severity = Severity::error,
     .summary = "A PDO with more entries than the device can map (limits.max_entries_per_pdo)",
     .rationale =
-        "Mapping objects have a fixed number of sub-entries on many devices: the STÖBER inverters have 'einen Parameter mit "
-        "sechs Subelementen' per PDO channel and direction (STÖBER manual §7.1.1), so a seventh entry is rejected with "
-        "SDO abort 0x06040042. Padding entries occupy a mapping entry too and are counted. Set with "
-        "`limits: { max_entries_per_pdo: 6 }`.",
+        "Mapping objects have a fixed number of sub-entries on many devices: the STÖBER inverters have 'einen "
+        "Parameter mit sechs Subelementen' per PDO channel and direction (STÖBER ECS 5000 EtherCAT manual §7.1.1), so "
+        "a seventh entry is rejected with SDO abort 0x06040042. Padding entries occupy a mapping entry too and are "
+        "counted. Set with `limits: { max_entries_per_pdo: 6 }`.",
     .bad_example = "max_entries_per_pdo: 6 and an RxPdo with 7 entries",
     .good_example = "max_entries_per_pdo: 6 and an RxPdo with 6 entries",
     .check = check_max_entries,
@@ -174,9 +175,10 @@ constexpr Rule profile_bitlen{
     .default_severity = Severity::error,
     .summary = "An entry BitLen the device cannot map (limits.bitlen)",
     .rationale =
-        "Some devices map only whole objects of certain widths: the item/Afag servo controllers accept BitLen 8, 16 or 32 "
-        "(servo manuals Tabelle 14, §6.7.2). Bit-sized entries are then rejected when the master downloads the mapping. "
-        "Padding entries (Index 0) are exempt. Set with `limits: { bitlen: [8, 16, 32] }`.",
+        "Some devices map only whole objects of certain widths: the item/Afag servo controllers accept BitLen 8, 16 "
+        "or 32 (the item C series and Afag SE-Power EtherCAT manuals, Tabelle 14 and §6.7.2). Bit-sized entries are "
+        "then rejected when the master downloads the mapping. Padding entries (Index 0) are exempt. Set with `limits: "
+        "{ bitlen: [8, 16, 32] }`.",
     .bad_example = "bitlen: [8, 16, 32] and <Entry><Index>#x6040</Index><BitLen>1</BitLen>…",
     .good_example = "bitlen: [8, 16, 32] and <Entry><Index>#x6040</Index><BitLen>16</BitLen>…",
     .check = check_bitlen,
@@ -207,11 +209,12 @@ constexpr Rule profile_fixed_sm{
     .default_severity = Severity::error,
     .summary = "A SyncManager whose type differs from the device's fixed assignment (limits.fixed_sm)",
     .rationale =
-        "Many devices hard-wire the use of their SyncManagers: SM0 mailbox out, SM1 mailbox in, SM2 outputs, SM3 inputs, "
-        "'fest und nicht durch den Anwender änderbar' on the item/Afag servo controllers (servo manuals §6.1.1, §6.1.2.2: "
-        "0x1C00 = 1, 2, 3, 4) and the same roles on the STÖBER inverters (STÖBER manual §8.2, §10.1). An ESI that "
-        "declares them differently makes the device reject the SM configuration. Set with "
-        "`limits: { fixed_sm: { 0: MBoxOut, 1: MBoxIn, 2: Outputs, 3: Inputs } }`.",
+        "Many devices hard-wire the use of their SyncManagers: SM0 mailbox out, SM1 mailbox in, SM2 outputs, SM3 "
+        "inputs, 'fest und nicht durch den Anwender änderbar' on the item/Afag servo controllers (the item C series "
+        "and Afag SE-Power EtherCAT manuals §6.1.1, §6.1.2.2: 0x1C00 = 1, 2, 3, 4) and the same roles on the STÖBER "
+        "inverters (STÖBER ECS 5000 EtherCAT manual §8.2, §10.1). An ESI that declares them differently makes the "
+        "device reject the SM configuration. Set with `limits: { fixed_sm: { 0: MBoxOut, 1: MBoxIn, 2: Outputs, 3: "
+        "Inputs } }`.",
     .bad_example = "fixed_sm: { 2: Outputs } and <Sm …>Inputs</Sm> as the third Sm",
     .good_example = "fixed_sm: { 2: Outputs } and <Sm …>Outputs</Sm> as the third Sm",
     .check = check_fixed_sm,
@@ -238,9 +241,10 @@ constexpr Rule profile_initcmd_transition{
     .default_severity = Severity::error,
     .summary = "An InitCmd at a transition the device does not support (limits.transitions)",
     .rationale =
-        "A device documents the state transitions it acts on: the item/Afag servo controllers list IP, PI, PS, SP, SO, "
-        "OS, OP, SI and OI and implement no Bootstrap (servo manuals Tabelle 8, Tabelle 15, §6.2). An InitCmd at another "
-        "transition is never executed or is refused. Set with `limits: { transitions: [IP, PS, SO] }`.",
+        "A device documents the state transitions it acts on: the item/Afag servo controllers list IP, PI, PS, SP, "
+        "SO, OS, OP, SI and OI and implement no Bootstrap (the item C series and Afag SE-Power EtherCAT manuals, "
+        "Tabelle 8, Tabelle 15, §6.2). An InitCmd at another transition is never executed or is refused. Set with "
+        "`limits: { transitions: [IP, PS, SO] }`.",
     .bad_example = "transitions: [IP, PS, SO] and <InitCmd><Transition>IB</Transition>…",
     .good_example = "transitions: [IP, PS, SO] and <InitCmd><Transition>PS</Transition>…",
     .check = check_initcmd_transition,
@@ -266,11 +270,11 @@ constexpr Rule profile_initcmd_size{
     .default_severity = Severity::error,
     .summary = "A CoE InitCmd writes more bytes than the device accepts per SDO (limits.max_init_cmd_bytes)",
     .rationale =
-        "Some devices only support expedited SDO transfers: on the item/Afag servo controllers SDO access is limited to "
-        "32 bits because only standard CANopen objects of at most 4 bytes can be accessed, and segmented transfers carry "
-        "'max. 1 Segment mit 4 Byte Nutzdaten' (servo manuals §6.3, Tabelle 15); the STÖBER inverters transfer every "
-        "parameter as a 4-byte integer (STÖBER manual §7.2). Longer InitCmd data is aborted at start-up. Set with "
-        "`limits: { max_init_cmd_bytes: 4 }`.",
+        "Some devices only support expedited SDO transfers: on the item/Afag servo controllers SDO access is limited "
+        "to 32 bits because only standard CANopen objects of at most 4 bytes can be accessed, and segmented transfers "
+        "carry 'max. 1 Segment mit 4 Byte Nutzdaten' (the item C series and Afag SE-Power EtherCAT manuals §6.3, "
+        "Tabelle 15); the STÖBER inverters transfer every parameter as a 4-byte integer (STÖBER ECS 5000 EtherCAT "
+        "manual §7.2). Longer InitCmd data is aborted at start-up. Set with `limits: { max_init_cmd_bytes: 4 }`.",
     .bad_example = "max_init_cmd_bytes: 4 and <InitCmd>…<Data>0000000000000000</Data></InitCmd>",
     .good_example = "max_init_cmd_bytes: 4 and <InitCmd>…<Data>00000000</Data></InitCmd>",
     .check = check_initcmd_size,
@@ -301,9 +305,9 @@ constexpr Rule profile_mailbox_size{
     .summary = "A mailbox SyncManager larger than the device supports (limits.max_mailbox_size)",
     .rationale =
         "The mailbox size is limited by the ESC and the firmware's buffers: the AX58100 takes at most 128 bytes per "
-        "mailbox (kubabuda/EEPROM_generator 'Truncate MailboxSize to 128 when AX58100 ESC was selected'; domain notes "
-        "S7). A larger DefaultSize or MaxSize lets the master configure a mailbox the device overruns. Set with "
-        "`limits: { max_mailbox_size: 128 }`.",
+        "mailbox (kubabuda/EEPROM_generator 'Truncate MailboxSize to 128 when AX58100 ESC was selected'). A larger "
+        "DefaultSize or MaxSize lets the master configure a mailbox the device overruns. Set with `limits: { "
+        "max_mailbox_size: 128 }`.",
     .bad_example = "max_mailbox_size: 128 and <Sm DefaultSize=\"256\" …>MBoxOut</Sm>",
     .good_example = "max_mailbox_size: 128 and <Sm DefaultSize=\"128\" …>MBoxOut</Sm>",
     .check = check_mailbox_size,
@@ -344,9 +348,9 @@ constexpr Rule profile_absent_object{
         "An object the device does not have appears in the Dictionary, a PDO or an InitCmd (limits.absent_objects)",
     .rationale =
         "Manuals list objects a device lacks: the item/Afag servo controllers have no 0x1008, 0x1009 or 0x100A "
-        "('Objekt ist nicht vorhanden', servo manuals §6.1.2, Tabelle 6). An ESI that declares, maps or writes such an "
-        "object promises what the device answers with SDO abort 0x06020000. Set with "
-        "`limits: { absent_objects: [0x1008, 0x1009, 0x100A] }`.",
+        "('Objekt ist nicht vorhanden', the item C series and Afag SE-Power EtherCAT manuals §6.1.2, Tabelle 6). An "
+        "ESI that declares, maps or writes such an object promises what the device answers with SDO abort 0x06020000. "
+        "Set with `limits: { absent_objects: [0x1008, 0x1009, 0x100A] }`.",
     .bad_example = "absent_objects: [0x1008] and <Object><Index>#x1008</Index>…",
     .good_example = "absent_objects: [0x1008] and no object #x1008",
     .check = check_absent_object,

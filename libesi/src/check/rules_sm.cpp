@@ -102,12 +102,13 @@ constexpr Rule sm_direction_mismatch{
     .default_severity = Severity::error,
     .summary = "SM text and ControlByte direction disagree",
     .rationale =
-        "ControlByte bits 3:2 set the SyncManager direction (00: the master reads, 01: the master writes; ESC register "
-        "0x0804+8n, ETG.1000.4). MBoxOut and Outputs carry data from the master to the slave and need the write "
-        "direction (#x26, #x24, #x64); MBoxIn and Inputs need the read direction (#x22, #x20). A swapped direction "
-        "makes the ESC refuse the master's writes or the PDI's updates, and the device stays in PRE-OP with an SM "
-        "configuration error (SOES tutorial SM table; OpenEtherCATsociety/SOEM #247, where the maintainer lists the "
-        "canonical #x26/#x22/#x24/#x20 block; domain notes S5/S6).",
+        "ControlByte bits 3:2 set the SyncManager direction (00: the master reads, 01: the master writes; ESC "
+        "register 0x0804+8n, ETG.1000.4). MBoxOut and Outputs carry data from the master to the slave and need the "
+        "write direction (#x26, #x24, #x64); MBoxIn and Inputs need the read direction (#x22, #x20). A swapped "
+        "direction makes the ESC refuse the master's writes or the PDI's updates, and the device stays in PRE-OP with "
+        "an SM configuration error (SOES tutorial SM table; OpenEtherCATsociety/SOEM #247, where the maintainer lists "
+        "the canonical #x26/#x22/#x24/#x20 block; SOES soes/esc.c ESC_checkSM23 keeps the device in PRE-OP when the "
+        "SM2/SM3 control bytes differ from its own).",
     .bad_example = "<Sm StartAddress=\"#x1100\" ControlByte=\"#x20\" Enable=\"1\">Outputs</Sm>",
     .good_example = "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" Enable=\"1\">Outputs</Sm>",
     .check = check_direction,
@@ -137,8 +138,9 @@ constexpr Rule sm_mailbox_mode{
         "MBoxOut and MBoxIn must run in mailbox (single-buffer, handshake) mode, ControlByte bits 1:0 = 10: #x26 for "
         "the master's requests and #x22 for the slave's answers. In buffered (3-buffer) mode the ESC overwrites "
         "unread messages and occupies three times the size (ESC register 0x0804+8n; SOES tutorial; "
-        "OpenEtherCATsociety/SOEM #247 lists the canonical #x26/#x22 pair; in the corpus 499 MBoxOut and 499 MBoxIn "
-        "SMs use exactly these, the only exceptions being a deliberately broken test file).",
+        "OpenEtherCATsociety/SOEM #247 lists the canonical #x26/#x22 pair; in 95 public ESI files, Beckhoff's "
+        "catalogues in DiamondLightSource/ethercat among them, 500 MBoxOut and 500 MBoxIn SMs use exactly these; the "
+        "only others are in the BogusServo.xml test file of zultron/hw_device_mgr).",
     .bad_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x24\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
     .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
     .check = check_mailbox_mode,
@@ -202,8 +204,9 @@ constexpr Rule sm_mailbox_position{
     .rationale =
         "The standard mailbox uses SM0 for master -> slave (MBoxOut) and SM1 for slave -> master (MBoxIn): the SII "
         "standard mailbox words 0x18-0x1B and 0x1C00:01/02 describe exactly these two, and masters such as SOEM "
-        "program SM0/SM1 as the mailbox from those words (SOES tutorial; servo manuals §6.1.1 R1 'SM0 = mailbox, incoming "
-        "SDOs, SM1 = mailbox, outgoing'). The n-th Sm element is SMn.",
+        "program SM0/SM1 as the mailbox from those words (SOES tutorial; the item C series and Afag SE-Power EtherCAT "
+        "manuals §6.1.1: SM0 is the mailbox for incoming SDOs, SM1 the one for outgoing SDOs). The n-th Sm element is "
+        "SMn.",
     .bad_example =
         "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... "
         "ControlByte=\"#x22\">MBoxIn</Sm>",
@@ -263,11 +266,12 @@ constexpr Rule sm_overlap{
     .rationale =
         "Each SyncManager owns [StartAddress, StartAddress + size) of ESC memory, and a buffered process-data SM "
         "(ControlByte bits 1:0 = 00) owns three consecutive buffers of that size (ESC datasheet '3-buffer mode'); the "
-        "master only writes the first address to the ESC. Overlapping ranges corrupt each other's data (domain note "
-        "S7; the gen_od review computes SM addresses the same way). A process-data SM's size is that of the PDOs "
-        "assigned to it by default, since the master computes it from them, else DefaultSize; a mailbox SM counts "
-        "once (a buffered mailbox is sm-mailbox-mode's finding). SMs below 0x1000, in the register area (Beckhoff "
-        "terminals put 1-byte buffered SMs on the digital I/O bytes 0x0F00, 0x0F01), count once as well.",
+        "master only writes the first address to the ESC. Overlapping ranges corrupt each other's data (SOES "
+        "soes/esc.c ESC_checkSM23 refuses the state change when SM2's three buffers reach into SM3). A process-data "
+        "SM's size is that of the PDOs assigned to it by default, since the master computes it from them, else "
+        "DefaultSize; a mailbox SM counts once (a buffered mailbox is sm-mailbox-mode's finding). SMs below 0x1000, "
+        "in the register area (Beckhoff terminals put 1-byte buffered SMs on the digital I/O bytes 0x0F00, 0x0F01), "
+        "count once as well.",
     .bad_example =
         "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
         "<Sm StartAddress=\"#x1140\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
@@ -461,10 +465,11 @@ constexpr Rule sm_1c00_mismatch{
     .summary = "0x1C00 communication types disagree with the Sm list",
     .rationale =
         "0x1C00 sub n gives the type of SM n-1: 1 mailbox receive, 2 mailbox send, 3 process data output, 4 process "
-        "data input, 0 unused (ETG.1000.6 object 0x1C00; servo manuals §6.1.2.2 R2). Masters read it over SDO to "
-        "decide which SM carries the PDO assignment 0x1C12/0x1C13; a copy that disagrees with the Sm elements "
-        "makes the master configure the wrong SM. Swapped SM2/SM3 types in SSC-generated firmware kept devices out "
-        "of OP (OpenEtherCATsociety/SOEM #401). Defaults are read from DefaultValue or DefaultData.",
+        "data input, 0 unused (ETG.1000.6 object 0x1C00; the item C series and Afag SE-Power EtherCAT manuals "
+        "§6.1.2.2). Masters read it over SDO to decide which SM carries the PDO assignment 0x1C12/0x1C13; a copy that "
+        "disagrees with the Sm elements makes the master configure the wrong SM. Swapped SM2/SM3 types in "
+        "SSC-generated firmware kept devices out of OP (OpenEtherCATsociety/SOEM #401). Defaults are read from "
+        "DefaultValue or DefaultData.",
     .bad_example =
         "<Sm ...>Outputs</Sm> (SM2) ... 0x1C00 <SubItem><Name>SubIndex 003</Name><Info><DefaultValue>4</DefaultValue>",
     .good_example =
