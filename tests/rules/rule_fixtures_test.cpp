@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -107,6 +108,42 @@ TEST(RuleCatalogue, IdsAreUniqueKebabCaseWithKnownAreaPrefix) {
         EXPECT_GT(rule.rationale.size(), 60u) << id << ": the rationale must explain and cite a source";
         EXPECT_FALSE(rule.bad_example.empty()) << id;
         EXPECT_FALSE(rule.good_example.empty()) << id;
+    }
+}
+
+// Rationales cite what a user can open: ETG documents, public projects and issues, vendor manuals
+// by name and section. These phrases point at notes and data sets only the authors have.
+TEST(RuleCatalogue, RationalesCiteNoInternalNotes) {
+    static const std::string_view internal[] = {"domain note", "gen_od", "seed ", "servo manuals", "the corpus"};
+    for (const auto& rule : esi::all_rules())
+        for (const auto phrase : internal)
+            EXPECT_EQ(rule.rationale.find(phrase), std::string_view::npos) << rule.id << " cites '" << phrase << "'";
+}
+
+// One rule in one place (libesi/src/check/areas.hpp): each rule's Rule constant is defined once,
+// in a rules file of its area (rules_<area>.cpp or rules_<area>_<topic>.cpp), where its check
+// function is. Front-end rules without a check (xml-…, lint-directive) may live in any rules file.
+TEST(RuleCatalogue, EachRuleIsDefinedOnceInARulesFileOfItsArea) {
+    const auto dir = esi::test::source_dir() / "libesi" / "src" / "check";
+    std::map<std::string, std::vector<std::string>> files_of;  // rule id -> rules files defining it
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string file = entry.path().filename().string();
+        if (!file.starts_with("rules_") || entry.path().extension() != ".cpp") continue;
+        const std::string text = read_text(entry.path());
+        const std::string key = ".id = \"";
+        for (auto at = text.find(key); at != std::string::npos; at = text.find(key, at + 1)) {
+            const auto begin = at + key.size();
+            files_of[text.substr(begin, text.find('"', begin) - begin)].push_back(file);
+        }
+    }
+    for (const auto& rule : esi::all_rules()) {
+        const std::string id(rule.id);
+        const auto& files = files_of[id];
+        ASSERT_EQ(files.size(), 1u) << id << " must be defined in exactly one libesi/src/check/rules_*.cpp";
+        if (!rule.check) continue;
+        const std::string area = id.substr(0, id.find('-'));
+        EXPECT_TRUE(files[0] == "rules_" + area + ".cpp" || files[0].starts_with("rules_" + area + "_"))
+            << id << " is defined in " << files[0] << ", not in a rules file of its area " << area;
     }
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // How pdo-… and od-… diagnostics spell what they talk about: object addresses as ESI files write
 // them (#x6064, #x6064:00), so that a message can be searched for in the file, and the kind of
-// value a basic type holds (the signedness trap of S17: a signed object described as UDINT).
+// value a basic type holds (a signed object described as UDINT reads -1 as 4294967295).
 
 #include <cstdint>
 #include <string>

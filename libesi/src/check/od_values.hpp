@@ -21,9 +21,9 @@ struct ValueFormat {
 };
 
 // The bit pattern a little-endian byte string holds (ETG.2000 DefaultData is in SDO order).
-// nullopt when the data is not valid hex, empty or longer than 8 bytes. Read in place: rules
-// read every default, minimum and maximum of the dictionaries, and HexData::bytes() allocated
-// a vector for each.
+// nullopt when the data is not valid hex, empty or longer than 8 bytes. Read in place, without
+// allocating (unlike HexData::bytes()): rules read every default, minimum and maximum of the
+// dictionaries.
 [[nodiscard]] std::optional<std::uint64_t> little_endian_pattern(const HexData& data);
 
 // The integer a little-endian byte string holds, sign-extended for signed formats. nullopt when

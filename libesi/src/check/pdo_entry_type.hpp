@@ -25,7 +25,7 @@ struct EntryType {
 [[nodiscard]] EntryType entry_type(const TypeIndex& types, const PdoEntry& entry);
 
 // entry_type() remembered per DataType text: four pdo rules ask it of every entry, and a
-// catalogue writes a handful of type names thousands of times (each answer took several
+// catalogue writes a handful of type names thousands of times (each answer needs several
 // lookups and type-name parses). Used on one thread; the model must outlive it unchanged.
 class EntryTypes {
 public:

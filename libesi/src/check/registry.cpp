@@ -14,8 +14,12 @@ std::vector<Rule> build_catalogue() {
     rules::add_identity(rules);
     rules::add_sm(rules);
     rules::add_fmmu(rules);
-    rules::add_pdo(rules);
-    rules::add_od(rules);
+    rules::add_pdo_structure(rules);
+    rules::add_pdo_entry(rules);
+    rules::add_pdo_object(rules);
+    rules::add_pdo_default(rules);
+    rules::add_od_type(rules);
+    rules::add_od_object(rules);
     rules::add_mailbox(rules);
     rules::add_initcmd(rules);
     rules::add_dc(rules);

@@ -1,8 +1,8 @@
 #pragma once
 // What several rules compute about the same Dictionary, computed once per lint run: its
-// DataTypes by name (with BaseType loops), its objects by index and their layouts. Before,
-// each of some twenty rules built its own indexes and layouts, and the layouts of every
-// object were computed up to seven times per file.
+// DataTypes by name (with BaseType loops), its objects by index and their layouts. Rules take
+// these from the cache (RuleContext::cache) and never build their own, so each index and each
+// object layout is built at most once per Dictionary and run, however many rules ask.
 //
 // A cache belongs to one run of the rules over one document (run_rules) on one thread; the
 // model must not change while it lives.

@@ -2,8 +2,8 @@
 //
 // AssignActivate is written by the master to ESC registers 0x0980 (low byte, cyclic unit control)
 // and 0x0981 (high byte, activation): 0x0981 bit 0 activates the cyclic unit, bit 1 generates
-// SYNC0, bit 2 SYNC1 (Beckhoff ESC datasheet section II, "Distributed Clocks"; domain note S26).
-// The usual values: #x0000 free run, #x0300 SYNC0, #x0700 SYNC0 + SYNC1, Beckhoff #x0730.
+// SYNC0, bit 2 SYNC1 (Beckhoff ESC datasheet section II, "Distributed Clocks"). The usual values,
+// as Beckhoff's catalogues write them: #x0000 free run, #x0300 SYNC0, #x0700 SYNC0 + SYNC1, #x0730.
 #include <string>
 #include <unordered_map>
 
@@ -44,6 +44,20 @@ void check_name(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule dc_opmode_name{
+    .id = "dc-opmode-name",
+    .default_severity = Severity::error,
+    .summary = "Dc OpMode without Name or with a repeated Name",
+    .rationale =
+        "Masters list the operation modes by Name and modules select theirs through DcOpModeName, so every OpMode "
+        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required). Beckhoff's EL1262 "
+        "description (Beckhoff EL1xxx.xml in DiamondLightSource/ethercat etc/xml/) has two OpModes named DcSync in "
+        "one device.",
+    .bad_example = "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC</Name>...</OpMode>",
+    .good_example = "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC-Sync01</Name>...</OpMode>",
+    .check = check_name,
+};
+
 // ---- dc-assign-activate ---------------------------------------------------------------------
 
 void check_assign_activate(const EsiDocument& document, RuleContext& context) {
@@ -74,6 +88,23 @@ void check_assign_activate(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule dc_assign_activate{
+    .id = "dc-assign-activate",
+    .default_severity = Severity::error,
+    .summary = "AssignActivate that asks for SYNC signals without activating the cyclic unit",
+    .rationale =
+        "The high byte of AssignActivate goes to ESC register 0x0981: bit 0 activates the cyclic unit, bit 1 SYNC0, "
+        "bit 2 SYNC1. SYNC0/SYNC1 bits without bit 0 (e.g. #x0200 instead of #x0300) generate no signal, so a device "
+        "that waits for SYNC0 does not reach SAFE-OP (Beckhoff ESC datasheet section II, register 0x0981; Beckhoff's "
+        "catalogues write #x0300 for SYNC0 and #x0700 for SYNC0+SYNC1, e.g. Beckhoff EL4xxx.xml in "
+        "DiamondLightSource/ethercat etc/xml/; STÖBER ECS 5000 manual §11.5: with synchronisation active the inverter "
+        "stays in PRE-OP without a valid SYNC0 cycle). A missing AssignActivate or one wider than 16 bits is reported "
+        "too.",
+    .bad_example = "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0200</AssignActivate></OpMode>",
+    .good_example = "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0300</AssignActivate></OpMode>",
+    .check = check_assign_activate,
+};
 
 // ---- dc-cycle-time --------------------------------------------------------------------------
 
@@ -115,41 +146,35 @@ void check_cycle_time(const EsiDocument& document, RuleContext& context) {
     }
 }
 
-}  // namespace
-
-void add_dc(std::vector<Rule>& out) {
-    out.push_back(Rule{
-        "dc-opmode-name", Severity::error, "Dc OpMode without Name or with a repeated Name",
-        "Masters list the operation modes by Name and modules select theirs through DcOpModeName, so every OpMode "
-        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required; domain note S26). "
-        "Beckhoff's EL1262 description in the corpus has two OpModes named DcSync in one device.",
-        "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC</Name>...</OpMode>",
-        "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC-Sync01</Name>...</OpMode>", &check_name});
-    out.push_back(Rule{
-        "dc-assign-activate", Severity::error, "AssignActivate that asks for SYNC signals without activating the cyclic unit",
-        "The high byte of AssignActivate goes to ESC register 0x0981: bit 0 activates the cyclic unit, bit 1 SYNC0, "
-        "bit 2 SYNC1. SYNC0/SYNC1 bits without bit 0 (e.g. #x0200 instead of #x0300) generate no signal, so a device "
-        "that waits for SYNC0 does not reach SAFE-OP (Beckhoff ESC datasheet section II, register 0x0981; domain note "
-        "S26: #x0300 SYNC0, #x0700 SYNC0+SYNC1; STÖBER ECS 5000 manual §11.5: with synchronisation active the "
-        "inverter stays in PRE-OP without a valid SYNC0 cycle). A missing AssignActivate or one wider than 16 bits "
-        "is reported too.",
-        "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0200</AssignActivate></OpMode>",
-        "<OpMode><Name>DC</Name><Desc>DC-Synchron</Desc><AssignActivate>#x0300</AssignActivate></OpMode>",
-        &check_assign_activate});
-    out.push_back(Rule{
-        "dc-cycle-time", Severity::warning, "DC times for a SYNC signal that is not activated, or negative cycle times",
+constexpr Rule dc_cycle_time{
+    .id = "dc-cycle-time",
+    .default_severity = Severity::warning,
+    .summary = "DC times for a SYNC signal that is not activated, or negative cycle times",
+    .rationale =
         "CycleTimeSync0/ShiftTimeSync0 configure SYNC0 and CycleTimeSync1/ShiftTimeSync1 SYNC1 (ESC registers "
         "0x09A0-0x09A7; ETG.2010 DC category). A non-zero time for a signal AssignActivate does not activate is never "
         "used and usually means the wrong AssignActivate was copied (e.g. a SYNC1 shift with #x0300); a negative "
         "cycle time cannot be programmed at all. Factors are not checked: Beckhoff writes negative factors as "
         "dividers of the bus cycle.",
+    .bad_example =
         "<OpMode><Name>DC</Name><AssignActivate>#x0300</AssignActivate><CycleTimeSync0 Factor=\"1\">0</CycleTimeSync0>"
         "<ShiftTimeSync0>0</ShiftTimeSync0><CycleTimeSync1 Factor=\"1\">0</CycleTimeSync1><ShiftTimeSync1>100000</"
         "ShiftTimeSync1></OpMode>",
+    .good_example =
         "<OpMode><Name>DC</Name><AssignActivate>#x0700</AssignActivate><CycleTimeSync0 Factor=\"1\">0</CycleTimeSync0>"
         "<ShiftTimeSync0>0</ShiftTimeSync0><CycleTimeSync1 Factor=\"1\">0</CycleTimeSync1><ShiftTimeSync1>100000</"
         "ShiftTimeSync1></OpMode>",
-        &check_cycle_time});
+    .check = check_cycle_time,
+};
+
+}  // namespace
+
+void add_dc(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        dc_opmode_name,
+        dc_assign_activate,
+        dc_cycle_time,
+    });
 }
 
 }  // namespace esi::rules

@@ -41,6 +41,20 @@ void check_image(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule deprecated_image16x14{
+    .id = "deprecated-image16x14",
+    .default_severity = Severity::warning,
+    .summary = "Image16x14 on Vendor, Group, Device, Module or Slot",
+    .rationale =
+        "Image16x14 referred to a bitmap file by name; the schema marks it obsolete and the conformance tool reports "
+        "it (CTT TF-1300 5-1 Vendor:Image16x14, 5-3 Group:Image16x14, 5-4 Device:Image16x14; ETG.2000 schema 1.17 "
+        "'obsolete'). Tools ignore it; the icon belongs in ImageData16x14 (the bitmap as hex) or ImageFile16x14.",
+    .bad_example = "<Group><Type>DigitalIO</Type><Name>Digital I/O</Name><Image16x14>DIO</Image16x14></Group>",
+    .good_example =
+        "<Group><Type>DigitalIO</Type><Name>Digital I/O</Name><ImageData16x14>424D...</ImageData16x14></Group>",
+    .check = check_image,
+};
+
 // ---- deprecated-vendor-unique-name ----------------------------------------------------------
 
 void check_unique_name(const EsiDocument& document, RuleContext& context) {
@@ -49,6 +63,18 @@ void check_unique_name(const EsiDocument& document, RuleContext& context) {
             context.report(info.vendor->pos, "Vendor@UniqueName ('" + *info.vendor->unique_name +
                                                  "') is obsolete; the vendor is identified by Vendor/Id");
 }
+
+constexpr Rule deprecated_vendor_unique_name{
+    .id = "deprecated-vendor-unique-name",
+    .default_severity = Severity::warning,
+    .summary = "Vendor@UniqueName",
+    .rationale =
+        "UniqueName is obsolete in the schema and reported by the conformance tool (CTT TF-1300 5-2 "
+        "'Vendor@UniqueName'; ETG.2000 schema 1.17). A vendor is identified by its ETG vendor id.",
+    .bad_example = "<Vendor UniqueName=\"ExampleGmbH\"><Id>#x00000E4A</Id>...</Vendor>",
+    .good_example = "<Vendor><Id>#x00000E4A</Id>...</Vendor>",
+    .check = check_unique_name,
+};
 
 // ---- deprecated-tc-cfg-mode-safe-op ---------------------------------------------------------
 
@@ -60,6 +86,18 @@ void check_tc_cfg_mode_safe_op(const EsiDocument& document, RuleContext& context
                                                  "that the schema no longer defines); remove it");
 }
 
+constexpr Rule deprecated_tc_cfg_mode_safe_op{
+    .id = "deprecated-tc-cfg-mode-safe-op",
+    .default_severity = Severity::warning,
+    .summary = "Device Type@TcCfgModeSafeOp",
+    .rationale =
+        "TcCfgModeSafeOp was a TwinCAT-specific hint on Device/Type; the schema marks it obsolete and the conformance "
+        "tool reports it (CTT TF-1300 5-5 'Device:Type@TcCfgModeSafeOp'; ETG.2000 schema 1.17).",
+    .bad_example = "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\" TcCfgModeSafeOp=\"true\">EX-DIO-8</Type>",
+    .good_example = "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\">EX-DIO-8</Type>",
+    .check = check_tc_cfg_mode_safe_op,
+};
+
 // ---- deprecated-profile-channel -------------------------------------------------------------
 
 void check_profile_channel(const EsiDocument& document, RuleContext& context) {
@@ -69,6 +107,18 @@ void check_profile_channel(const EsiDocument& document, RuleContext& context) {
                 context.report(profile.pos, device_label(*device) + ": Profile@Channel (" + std::to_string(*profile.channel) +
                                                 ") is obsolete; describe channels with ChannelCount/ChannelInfo");
 }
+
+constexpr Rule deprecated_profile_channel{
+    .id = "deprecated-profile-channel",
+    .default_severity = Severity::warning,
+    .summary = "Device Profile@Channel",
+    .rationale =
+        "Profile@Channel is obsolete and reported by the conformance tool (CTT TF-1300 5-6 'Device:Profile@Channel'; "
+        "ETG.2000 schema 1.17); multi-channel profiles are described with ChannelCount and ChannelInfo.",
+    .bad_example = "<Profile Channel=\"1\"><ProfileNo>402</ProfileNo>...</Profile>",
+    .good_example = "<Profile><ProfileNo>402</ProfileNo>...</Profile>",
+    .check = check_profile_channel,
+};
 
 // ---- deprecated-fmmu-op-only ----------------------------------------------------------------
 
@@ -81,6 +131,19 @@ void check_fmmu_op_only(const EsiDocument& document, RuleContext& context) {
                                                          "SyncManager (Sm@OpOnly)");
 }
 
+constexpr Rule deprecated_fmmu_op_only{
+    .id = "deprecated-fmmu-op-only",
+    .default_severity = Severity::warning,
+    .summary = "Fmmu@OpOnly",
+    .rationale =
+        "Fmmu@OpOnly is obsolete and reported by the conformance tool (CTT TF-1300 5-7 'Device:Fmmu@OpOnly'; ETG.2000 "
+        "schema 1.17); enabling outputs only in OP is declared on the SyncManager (Sm@OpOnly), which the SII "
+        "SyncM category carries (enable byte bit 3).",
+    .bad_example = "<Fmmu OpOnly=\"true\">Outputs</Fmmu>",
+    .good_example = "<Fmmu>Outputs</Fmmu> ... <Sm ... OpOnly=\"true\">Outputs</Sm>",
+    .check = check_fmmu_op_only,
+};
+
 // ---- deprecated-sm-one-byte-mode ------------------------------------------------------------
 
 void check_sm_one_byte_mode(const EsiDocument& document, RuleContext& context) {
@@ -89,6 +152,19 @@ void check_sm_one_byte_mode(const EsiDocument& document, RuleContext& context) {
             if (device->sms[n].one_byte_mode)
                 context.report(device->sms[n].pos, "SM" + std::to_string(n) + ": Sm@OneByteMode is obsolete; remove it");
 }
+
+constexpr Rule deprecated_sm_one_byte_mode{
+    .id = "deprecated-sm-one-byte-mode",
+    .default_severity = Severity::warning,
+    .summary = "Sm@OneByteMode",
+    .rationale =
+        "Sm@OneByteMode is obsolete and reported by the conformance tool (CTT TF-1300 5-8 'Device:Sm@OneByteMode'; "
+        "ETG.2000 schema 1.17).",
+    .bad_example =
+        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\" OneByteMode=\"false\">MBoxOut</Sm>",
+    .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
+    .check = check_sm_one_byte_mode,
+};
 
 // ---- deprecated-obsolete --------------------------------------------------------------------
 
@@ -141,57 +217,34 @@ void check_obsolete(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule deprecated_obsolete{
+    .id = "deprecated-obsolete",
+    .default_severity = Severity::info,
+    .summary = "Other elements and attributes the schema marks obsolete",
+    .rationale =
+        "Schema 1.17 annotates further items as 'obsolete' that the published CTT TF-1300 group 5 list does not name "
+        "(the posted list is truncated after 5-10): Type@TcSmClass, Type@DownloadModuleList, Sm@Watchdog (use "
+        "ControlByte bit 6), Sm@FixedAssignment, CoE@DS402Channels (seen in the §7 example of the item C series and "
+        "Afag SE-Power EtherCAT manuals), CoE/Object, CoE InitCmd@Fixed and Dc/OpMode/Sm/SyncType, CycleTime, "
+        "ShiftTime. Tools ignore them; reported as information so that a file can be cleaned up before the next "
+        "schema drops them.",
+    .bad_example = "<CoE DS402Channels=\"1\" PdoAssign=\"true\"/>",
+    .good_example = "<CoE PdoAssign=\"true\"/>",
+    .check = check_obsolete,
+};
+
 }  // namespace
 
 void add_deprecated(std::vector<Rule>& out) {
-    out.push_back(Rule{
-        "deprecated-image16x14", Severity::warning, "Image16x14 on Vendor, Group, Device, Module or Slot",
-        "Image16x14 referred to a bitmap file by name; the schema marks it obsolete and the conformance tool reports "
-        "it (CTT TF-1300 5-1 Vendor:Image16x14, 5-3 Group:Image16x14, 5-4 Device:Image16x14; ETG.2000 schema 1.17 "
-        "'obsolete'). Tools ignore it; the icon belongs in ImageData16x14 (the bitmap as hex) or ImageFile16x14.",
-        "<Group><Type>DigitalIO</Type><Name>Digital I/O</Name><Image16x14>DIO</Image16x14></Group>",
-        "<Group><Type>DigitalIO</Type><Name>Digital I/O</Name><ImageData16x14>424D...</ImageData16x14></Group>",
-        &check_image});
-    out.push_back(Rule{
-        "deprecated-vendor-unique-name", Severity::warning, "Vendor@UniqueName",
-        "UniqueName is obsolete in the schema and reported by the conformance tool (CTT TF-1300 5-2 "
-        "'Vendor@UniqueName'; ETG.2000 schema 1.17). A vendor is identified by its ETG vendor id.",
-        "<Vendor UniqueName=\"ExampleGmbH\"><Id>#x00000E4A</Id>...</Vendor>", "<Vendor><Id>#x00000E4A</Id>...</Vendor>",
-        &check_unique_name});
-    out.push_back(Rule{
-        "deprecated-tc-cfg-mode-safe-op", Severity::warning, "Device Type@TcCfgModeSafeOp",
-        "TcCfgModeSafeOp was a TwinCAT-specific hint on Device/Type; the schema marks it obsolete and the conformance "
-        "tool reports it (CTT TF-1300 5-5 'Device:Type@TcCfgModeSafeOp'; ETG.2000 schema 1.17).",
-        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\" TcCfgModeSafeOp=\"true\">EX-DIO-8</Type>",
-        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\">EX-DIO-8</Type>", &check_tc_cfg_mode_safe_op});
-    out.push_back(Rule{
-        "deprecated-profile-channel", Severity::warning, "Device Profile@Channel",
-        "Profile@Channel is obsolete and reported by the conformance tool (CTT TF-1300 5-6 'Device:Profile@Channel'; "
-        "ETG.2000 schema 1.17); multi-channel profiles are described with ChannelCount and ChannelInfo.",
-        "<Profile Channel=\"1\"><ProfileNo>402</ProfileNo>...</Profile>", "<Profile><ProfileNo>402</ProfileNo>...</Profile>",
-        &check_profile_channel});
-    out.push_back(Rule{
-        "deprecated-fmmu-op-only", Severity::warning, "Fmmu@OpOnly",
-        "Fmmu@OpOnly is obsolete and reported by the conformance tool (CTT TF-1300 5-7 'Device:Fmmu@OpOnly'; ETG.2000 "
-        "schema 1.17); enabling outputs only in OP is declared on the SyncManager (Sm@OpOnly), which the SII "
-        "SyncM category carries (enable byte bit 3).",
-        "<Fmmu OpOnly=\"true\">Outputs</Fmmu>", "<Fmmu>Outputs</Fmmu> ... <Sm ... OpOnly=\"true\">Outputs</Sm>",
-        &check_fmmu_op_only});
-    out.push_back(Rule{
-        "deprecated-sm-one-byte-mode", Severity::warning, "Sm@OneByteMode",
-        "Sm@OneByteMode is obsolete and reported by the conformance tool (CTT TF-1300 5-8 'Device:Sm@OneByteMode'; "
-        "ETG.2000 schema 1.17).",
-        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\" OneByteMode=\"false\">MBoxOut</Sm>",
-        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
-        &check_sm_one_byte_mode});
-    out.push_back(Rule{
-        "deprecated-obsolete", Severity::info, "Other elements and attributes the schema marks obsolete",
-        "Schema 1.17 annotates further items as 'obsolete' that the published CTT TF-1300 group 5 list does not name "
-        "(the posted list is truncated after 5-10): Type@TcSmClass, Type@DownloadModuleList, Sm@Watchdog (use ControlByte bit 6), "
-        "Sm@FixedAssignment, CoE@DS402Channels (seen in the servo manuals' §7 example), CoE/Object, CoE "
-        "InitCmd@Fixed and Dc/OpMode/Sm/SyncType, CycleTime, ShiftTime. Tools ignore them; reported as information "
-        "so that a file can be cleaned up before the next schema drops them.",
-        "<CoE DS402Channels=\"1\" PdoAssign=\"true\"/>", "<CoE PdoAssign=\"true\"/>", &check_obsolete});
+    out.insert(out.end(), {
+        deprecated_image16x14,
+        deprecated_vendor_unique_name,
+        deprecated_tc_cfg_mode_safe_op,
+        deprecated_profile_channel,
+        deprecated_fmmu_op_only,
+        deprecated_sm_one_byte_mode,
+        deprecated_obsolete,
+    });
 }
 
 }  // namespace esi::rules

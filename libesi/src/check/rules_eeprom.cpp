@@ -40,6 +40,21 @@ void check_data_and_structured(const EsiDocument& document, RuleContext& context
     }
 }
 
+constexpr Rule eeprom_data_and_structured{
+    .id = "eeprom-data-and-structured",
+    .default_severity = Severity::error,
+    .summary = "Eeprom with both a raw Data image and structured elements",
+    .rationale =
+        "Eeprom is a choice: either Data, the complete SII image used as it is, or "
+        "ByteSize/ConfigData/BootStrap/Category from which a tool builds the image (ETG.2000 EepromType; "
+        "leducp/KickCAT rejects 'Eeprom with both Data and ByteSize'). With both, one half is silently ignored, and "
+        "which half differs between tools.",
+    .bad_example =
+        "<Eeprom><Data>050E0344...</Data><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+    .good_example = "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E03440A000000</ConfigData></Eeprom>",
+    .check = check_data_and_structured,
+};
+
 // ---- eeprom-byte-size -----------------------------------------------------------------------
 
 void check_byte_size(const EsiDocument& document, RuleContext& context) {
@@ -57,6 +72,19 @@ void check_byte_size(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule eeprom_byte_size{
+    .id = "eeprom-byte-size",
+    .default_severity = Severity::error,
+    .summary = "Eeprom ByteSize that SII word 0x3E cannot express",
+    .rationale =
+        "SII word 0x3E holds the EEPROM size as KiBit minus one, i.e. bytes / 128 - 1 (ETG.2010; Beckhoff ESC datasheet "
+        "'SII EEPROM content'). A ByteSize of 0 or one that is not a multiple of 128 cannot be written there, and the "
+        "conformance tool compares ByteSize with that word (CTT TF-1300 2-6).",
+    .bad_example = "<Eeprom><ByteSize>2000</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+    .good_example = "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+    .check = check_byte_size,
+};
+
 // ---- eeprom-byte-size-unusual ---------------------------------------------------------------
 
 void check_byte_size_unusual(const EsiDocument& document, RuleContext& context) {
@@ -73,6 +101,20 @@ void check_byte_size_unusual(const EsiDocument& document, RuleContext& context) 
                            " would be); keep it only for an emulated EEPROM of exactly this size");
     }
 }
+
+constexpr Rule eeprom_byte_size_unusual{
+    .id = "eeprom-byte-size-unusual",
+    .default_severity = Severity::info,
+    .summary = "Eeprom ByteSize that is not a power of two",
+    .rationale =
+        "SII EEPROMs are serial parts of 2^n bytes (1 KiBit = 128 bytes up to 16 KiBit = 2048 bytes and beyond); a "
+        "size such as 1920 fits SII word 0x3E but matches no part, and tools that size images by it write or check "
+        "the wrong range (CTT TF-1300 2-6; MetalMusings/MyOwnEtherCATDevice #16 'file length is larger than chip "
+        "capacity'). Emulated EEPROMs (in an MCU or FPGA) can have other sizes, hence only information.",
+    .bad_example = "<Eeprom><ByteSize>1920</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+    .good_example = "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+    .check = check_byte_size_unusual,
+};
 
 // ---- eeprom-hex -----------------------------------------------------------------------------
 
@@ -100,6 +142,19 @@ void check_hex(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule eeprom_hex{
+    .id = "eeprom-hex",
+    .default_severity = Severity::error,
+    .summary = "Eeprom Data, ConfigData, BootStrap or Category Data that is not hexBinary",
+    .rationale =
+        "These elements are xs:hexBinary: two hex digits per byte. An odd number of digits or a stray character "
+        "leaves the bytes undefined; SII writers differ in padding or truncating them (ETG.2000 EepromType; "
+        "leducp/KickCAT 'odd-length hex binary'; synapticon/siitool PR #6 fixed its ConfigData scanf).",
+    .bad_example = "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E034</ConfigData></Eeprom>",
+    .good_example = "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
+    .check = check_hex,
+};
+
 // ---- eeprom-config-data ---------------------------------------------------------------------
 
 void check_config_data(const EsiDocument& document, RuleContext& context) {
@@ -114,6 +169,20 @@ void check_config_data(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule eeprom_config_data{
+    .id = "eeprom-config-data",
+    .default_severity = Severity::error,
+    .summary = "Eeprom ConfigData longer than 14 bytes",
+    .rationale =
+        "ConfigData is the ESC configuration area, SII words 0-6 (PDI control and configuration, SYNC pulse length, "
+        "extended PDI configuration, station alias, two reserved words); word 7 is a CRC-8 over these 14 bytes that "
+        "tools compute (Beckhoff ESC datasheet section I table 'ESC configuration area'; ETG.2010; CTT TF-1300 2-8). "
+        "Longer ConfigData runs into the checksum and the identity words.",
+    .bad_example = "<ConfigData>050E03440A0000000000000000000000</ConfigData>",
+    .good_example = "<ConfigData>050E03440A000000000000000000</ConfigData>",
+    .check = check_config_data,
+};
+
 // ---- eeprom-boot-strap ----------------------------------------------------------------------
 
 void check_boot_strap(const EsiDocument& document, RuleContext& context) {
@@ -126,6 +195,20 @@ void check_boot_strap(const EsiDocument& document, RuleContext& context) {
                                      "offset and size, send mailbox offset and size)");
     }
 }
+
+constexpr Rule eeprom_boot_strap{
+    .id = "eeprom-boot-strap",
+    .default_severity = Severity::error,
+    .summary = "Eeprom BootStrap that is not exactly 8 bytes",
+    .rationale =
+        "BootStrap holds SII words 0x14-0x17: bootstrap receive mailbox offset and size, send mailbox offset and size "
+        "(ETG.2010; Beckhoff ESC datasheet section I, Table 38 SII EEPROM content). Another length shifts or "
+        "truncates these words, and firmware that compares them with its boot constants refuses BOOT (SOES soes/esc.c "
+        "ESC_startmbxboot: AL status 0x0015 ALERR_INVALIDBOOTMBXCONFIG; kubabuda/EEPROM_generator #3).",
+    .bad_example = "<BootStrap>00108000801080</BootStrap>",
+    .good_example = "<BootStrap>0010800080108000</BootStrap>",
+    .check = check_boot_strap,
+};
 
 // ---- eeprom-category ------------------------------------------------------------------------
 
@@ -146,62 +229,31 @@ void check_category(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule eeprom_category{
+    .id = "eeprom-category",
+    .default_severity = Severity::error,
+    .summary = "Eeprom Category without CatNo or without payload",
+    .rationale =
+        "An extra SII category needs its type (CatNo, the category header word) and its content (Data, DataString, "
+        "DataUINT or DataUDINT); without either, tools cannot write it (ETG.2000 EepromType Category; ETG.2010 "
+        "category layout; leducp/KickCAT 'Eeprom Category without payload').",
+    .bad_example = "<Category><CatNo>2048</CatNo></Category>",
+    .good_example = "<Category><CatNo>2048</CatNo><Data>0100</Data></Category>",
+    .check = check_category,
+};
+
 }  // namespace
 
 void add_eeprom(std::vector<Rule>& out) {
-    out.push_back(Rule{
-        "eeprom-data-and-structured", Severity::error, "Eeprom with both a raw Data image and structured elements",
-        "Eeprom is a choice: either Data, the complete SII image used as it is, or ByteSize/ConfigData/BootStrap/"
-        "Category from which a tool builds the image (ETG.2000 EepromType; leducp/KickCAT rejects 'Eeprom with both "
-        "Data and ByteSize'; domain note S27). With both, one half is silently ignored, and which half differs between "
-        "tools.",
-        "<Eeprom><Data>050E0344...</Data><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
-        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E03440A000000</ConfigData></Eeprom>",
-        &check_data_and_structured});
-    out.push_back(Rule{
-        "eeprom-byte-size", Severity::error, "Eeprom ByteSize that SII word 0x3E cannot express",
-        "SII word 0x3E holds the EEPROM size as KiBit minus one, i.e. bytes / 128 - 1 (ETG.2010; Beckhoff ESC datasheet "
-        "'SII EEPROM content'). A ByteSize of 0 or one that is not a multiple of 128 cannot be written there, and the "
-        "conformance tool compares ByteSize with that word (CTT TF-1300 2-6).",
-        "<Eeprom><ByteSize>2000</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
-        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>", &check_byte_size});
-    out.push_back(Rule{
-        "eeprom-byte-size-unusual", Severity::info, "Eeprom ByteSize that is not a power of two",
-        "SII EEPROMs are serial parts of 2^n bytes (1 KiBit = 128 bytes up to 16 KiBit = 2048 bytes and beyond); a "
-        "size such as 1920 fits SII word 0x3E but matches no part, and tools that size images by it write or check "
-        "the wrong range (CTT TF-1300 2-6; MetalMusings/MyOwnEtherCATDevice #16 'file length is larger than chip "
-        "capacity'). Emulated EEPROMs (in an MCU or FPGA) can have other sizes, hence only information.",
-        "<Eeprom><ByteSize>1920</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>",
-        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>", &check_byte_size_unusual});
-    out.push_back(Rule{
-        "eeprom-hex", Severity::error, "Eeprom Data, ConfigData, BootStrap or Category Data that is not hexBinary",
-        "These elements are xs:hexBinary: two hex digits per byte. An odd number of digits or a stray character "
-        "leaves the bytes undefined; SII writers differ in padding or truncating them (ETG.2000 EepromType; "
-        "leducp/KickCAT 'odd-length hex binary'; synapticon/siitool PR #6 fixed its ConfigData scanf).",
-        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E034</ConfigData></Eeprom>",
-        "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E0344</ConfigData></Eeprom>", &check_hex});
-    out.push_back(Rule{
-        "eeprom-config-data", Severity::error, "Eeprom ConfigData longer than 14 bytes",
-        "ConfigData is the ESC configuration area, SII words 0-6 (PDI control and configuration, SYNC pulse length, "
-        "extended PDI configuration, station alias, two reserved words); word 7 is a CRC-8 over these 14 bytes that "
-        "tools compute (Beckhoff ESC datasheet section I table 'ESC configuration area'; ETG.2010; CTT TF-1300 2-8). "
-        "Longer ConfigData runs into the checksum and the identity words.",
-        "<ConfigData>050E03440A0000000000000000000000</ConfigData>", "<ConfigData>050E03440A000000000000000000</ConfigData>",
-        &check_config_data});
-    out.push_back(Rule{
-        "eeprom-boot-strap", Severity::error, "Eeprom BootStrap that is not exactly 8 bytes",
-        "BootStrap holds SII words 0x14-0x17: bootstrap receive mailbox offset and size, send mailbox offset and size "
-        "(ETG.2010; domain note S9). Another length shifts or truncates these words, and firmware that compares them "
-        "with its boot constants refuses BOOT (ALERR_INVALIDBOOTMBXCONFIG, the gen_od review; "
-        "kubabuda/EEPROM_generator #3).",
-        "<BootStrap>00108000801080</BootStrap>", "<BootStrap>0010800080108000</BootStrap>", &check_boot_strap});
-    out.push_back(Rule{
-        "eeprom-category", Severity::error, "Eeprom Category without CatNo or without payload",
-        "An extra SII category needs its type (CatNo, the category header word) and its content (Data, DataString, "
-        "DataUINT or DataUDINT); without either, tools cannot write it (ETG.2000 EepromType Category; ETG.2010 "
-        "category layout; leducp/KickCAT 'Eeprom Category without payload'; domain note S27).",
-        "<Category><CatNo>2048</CatNo></Category>", "<Category><CatNo>2048</CatNo><Data>0100</Data></Category>",
-        &check_category});
+    out.insert(out.end(), {
+        eeprom_data_and_structured,
+        eeprom_byte_size,
+        eeprom_byte_size_unusual,
+        eeprom_hex,
+        eeprom_config_data,
+        eeprom_boot_strap,
+        eeprom_category,
+    });
 }
 
 }  // namespace esi::rules

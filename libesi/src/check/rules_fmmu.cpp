@@ -46,6 +46,20 @@ void check_type(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule fmmu_type_unknown{
+    .id = "fmmu-type-unknown",
+    .default_severity = Severity::error,
+    .summary = "Fmmu text that is not an FMMU use",
+    .rationale =
+        "The Fmmu text says what the FMMU maps: Outputs, Inputs or MBoxState (and Beckhoff's DynamicOutputs/"
+        "DynamicInputs). The SII FMMU category stores exactly these as 1, 2, 3 (0 unused), so any other text cannot "
+        "be written to the EEPROM and masters do not know how to use the FMMU (ETG.2000 Fmmu; ETG.2010 category 40; "
+        "CTT TF-1300 2-11 compares them).",
+    .bad_example = "<Fmmu>Output</Fmmu>",
+    .good_example = "<Fmmu>Outputs</Fmmu>",
+    .check = check_type,
+};
+
 // ---- fmmu-sm-reference ----------------------------------------------------------------------
 
 void check_sm_reference(const EsiDocument& document, RuleContext& context) {
@@ -72,6 +86,20 @@ void check_sm_reference(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule fmmu_sm_reference{
+    .id = "fmmu-sm-reference",
+    .default_severity = Severity::error,
+    .summary = "Fmmu@Sm names a missing SM or one of the other direction",
+    .rationale =
+        "Fmmu@Sm ties the FMMU to a SyncManager (the n-th Sm element). An Outputs FMMU must map an output SM, an "
+        "Inputs FMMU an input SM and MBoxState the mailbox-in SM whose status bit it maps; a reference to a missing "
+        "or opposite SM makes masters that follow it map the wrong memory (ETG.2000 Fmmu@Sm; ethercrab-rs/ethercrab "
+        "#287 falls back to the SM index when the mapping cannot be resolved).",
+    .bad_example = "<Fmmu Sm=\"3\">Outputs</Fmmu> ... (SM3 is Inputs)",
+    .good_example = "<Fmmu Sm=\"2\">Outputs</Fmmu> ... (SM2 is Outputs)",
+    .check = check_sm_reference,
+};
 
 // ---- fmmu-missing ---------------------------------------------------------------------------
 
@@ -116,35 +144,33 @@ void check_missing(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule fmmu_missing{
+    .id = "fmmu-missing",
+    .default_severity = Severity::warning,
+    .summary = "Process data without an FMMU of that direction",
+    .rationale =
+        "Process data reaches the master's logical image only through an FMMU; the schema leaves Fmmu optional, so a "
+        "generator that forgets it produces a schema-valid file whose device never exchanges process data (ETG.2000 "
+        "DeviceType: Fmmu minOccurs 0; the SII FMMU category of ETG.2010 is built from these elements, and "
+        "ethercrab-rs/ethercrab #287 shows a master guessing FMMUs for an EEPROM that lists too few; CTT TF-1300 3-3 "
+        "counts them). The rule fires once per direction for the first SM that carries data (a DefaultSize or default "
+        "PDOs) without an FMMU of its kind.",
+    .bad_example =
+        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"1\" Enable=\"1\">Outputs</Sm> (no Fmmu)",
+    .good_example =
+        "<Fmmu>Outputs</Fmmu> ... <Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"1\" "
+        "Enable=\"1\">Outputs</Sm>",
+    .check = check_missing,
+};
+
 }  // namespace
 
 void add_fmmu(std::vector<Rule>& out) {
-    out.push_back(Rule{
-        "fmmu-type-unknown", Severity::error, "Fmmu text that is not an FMMU use",
-        "The Fmmu text says what the FMMU maps: Outputs, Inputs or MBoxState (and Beckhoff's DynamicOutputs/"
-        "DynamicInputs). The SII FMMU category stores exactly these as 1, 2, 3 (0 unused), so any other text cannot "
-        "be written to the EEPROM and masters do not know how to use the FMMU (ETG.2000 Fmmu; ETG.2010 category 40; "
-        "CTT TF-1300 2-11 compares them).",
-        "<Fmmu>Output</Fmmu>", "<Fmmu>Outputs</Fmmu>", &check_type});
-    out.push_back(Rule{
-        "fmmu-sm-reference", Severity::error, "Fmmu@Sm names a missing SM or one of the other direction",
-        "Fmmu@Sm ties the FMMU to a SyncManager (the n-th Sm element). An Outputs FMMU must map an output SM, an "
-        "Inputs FMMU an input SM and MBoxState the mailbox-in SM whose status bit it maps; a reference to a missing "
-        "or opposite SM makes masters that follow it map the wrong memory (ETG.2000 Fmmu@Sm; ethercrab-rs/ethercrab "
-        "#287 falls back to the SM index when the mapping cannot be resolved).",
-        "<Fmmu Sm=\"3\">Outputs</Fmmu> ... (SM3 is Inputs)", "<Fmmu Sm=\"2\">Outputs</Fmmu> ... (SM2 is Outputs)",
-        &check_sm_reference});
-    out.push_back(Rule{
-        "fmmu-missing", Severity::warning, "Process data without an FMMU of that direction",
-        "Process data reaches the master's logical image only through an FMMU; the schema leaves Fmmu optional, so a "
-        "generator that forgets it produces a schema-valid file whose device never exchanges process data (the "
-        "gen_od review in the domain notes: 'missing <Fmmu> ... not caught by schema validation'; CTT TF-1300 3-3 "
-        "counts them). The rule fires once per direction for the first SM that carries data (a DefaultSize or "
-        "default PDOs) without an FMMU of its kind.",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"1\" Enable=\"1\">Outputs</Sm> (no Fmmu)",
-        "<Fmmu>Outputs</Fmmu> ... <Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"1\" "
-        "Enable=\"1\">Outputs</Sm>",
-        &check_missing});
+    out.insert(out.end(), {
+        fmmu_type_unknown,
+        fmmu_sm_reference,
+        fmmu_missing,
+    });
 }
 
 }  // namespace esi::rules

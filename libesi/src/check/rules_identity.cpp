@@ -120,6 +120,20 @@ void check_vendor_id_missing(const EsiDocument& document, RuleContext& context) 
     }
 }
 
+constexpr Rule identity_vendor_id_missing{
+    .id = "identity-vendor-id-missing",
+    .default_severity = Severity::error,
+    .summary = "The file has no Vendor or the Vendor has no Id",
+    .rationale =
+        "Every device is identified by the triple (Vendor Id, ProductCode, RevisionNo): the master reads it from SII "
+        "words 0x08-0x0D and looks for the matching description. Without Vendor/Id no device of the file can be "
+        "matched, and the SII words 0x08-0x09 cannot be generated (ETG.2000 VendorType: Id is required; ETG.2010 "
+        "SII header; CTT TF-1300 2-1).",
+    .bad_example = "<Vendor><Name>Example GmbH</Name></Vendor>",
+    .good_example = "<Vendor><Id>#x00000E4A</Id><Name>Example GmbH</Name></Vendor>",
+    .check = check_vendor_id_missing,
+};
+
 // ---- identity-vendor-id-zero ----------------------------------------------------------------
 
 void check_vendor_id_zero(const EsiDocument& document, RuleContext& context) {
@@ -131,7 +145,21 @@ void check_vendor_id_zero(const EsiDocument& document, RuleContext& context) {
     }
 }
 
-// ---- identity-product-code-missing / identity-revision-missing ------------------------------
+constexpr Rule identity_vendor_id_zero{
+    .id = "identity-vendor-id-zero",
+    .default_severity = Severity::warning,
+    .summary = "Vendor Id 0 is not an assigned vendor id",
+    .rationale =
+        "Vendor ids are assigned by the EtherCAT Technology Group (1 is the ETG itself, 2 Beckhoff); 0 is not "
+        "assigned to anybody. Generator templates and prototypes ship with 0 (the default project of "
+        "kubabuda/EEPROM_generator, ref/gen.xml), and then every such device looks alike to a master that selects "
+        "descriptions by (Vendor Id, ProductCode, RevisionNo) (ETG.2000 VendorType Id; ETG.2010 SII words 0x08-0x09).",
+    .bad_example = "<Vendor><Id>0</Id><Name>Prototype</Name></Vendor>",
+    .good_example = "<Vendor><Id>#x00000E4A</Id><Name>Example GmbH</Name></Vendor>",
+    .check = check_vendor_id_zero,
+};
+
+// ---- identity-product-code-missing ----------------------------------------------------------
 
 void check_product_code_missing(const EsiDocument& document, RuleContext& context) {
     for_each_type_without(document, "ProductCode", &DeviceIdentity::product_code, [&](const Device& device) {
@@ -141,6 +169,23 @@ void check_product_code_missing(const EsiDocument& document, RuleContext& contex
     });
 }
 
+constexpr Rule identity_product_code_missing{
+    .id = "identity-product-code-missing",
+    .default_severity = Severity::error,
+    .summary = "Device Type without ProductCode",
+    .rationale =
+        "The product code goes into SII words 0x0A-0x0B and 0x1018:02, and masters select the device description by "
+        "it (ETG.2000 Device/Type; ETG.2010 SII header; CTT TF-1300 2-2). The schema leaves the attribute optional, "
+        "but a description without it cannot be matched to any device on the bus. Passive "
+        "terminals without an ESC (no Sm, Fmmu, Mailbox, PDO, Dc or Profile, such as Beckhoff's EL9xxx end "
+        "terminals) are exempt: they have no identity to read.",
+    .bad_example = "<Type RevisionNo=\"#x00010000\">EX-DIO-8</Type>",
+    .good_example = "<Type ProductCode=\"#x00001001\" RevisionNo=\"#x00010000\">EX-DIO-8</Type>",
+    .check = check_product_code_missing,
+};
+
+// ---- identity-revision-missing --------------------------------------------------------------
+
 void check_revision_missing(const EsiDocument& document, RuleContext& context) {
     for_each_type_without(document, "RevisionNo", &DeviceIdentity::revision_no, [&](const Device& device) {
         context.report(device.type.pos, device_label(device) +
@@ -148,6 +193,20 @@ void check_revision_missing(const EsiDocument& document, RuleContext& context) {
                                             "against it (CheckRevisionNo) and the conformance tool requires it");
     });
 }
+
+constexpr Rule identity_revision_missing{
+    .id = "identity-revision-missing",
+    .default_severity = Severity::error,
+    .summary = "Device Type without RevisionNo",
+    .rationale =
+        "The revision number goes into SII words 0x0C-0x0D and 0x1018:03; masters compare it with the description "
+        "(Type@CheckRevisionNo) and the conformance tool checks it (ETG.2000 Device/Type; CTT TF-1300 1-2, 2-3). "
+        "Several revisions of one product usually live in one file, so a missing revision makes them "
+        "indistinguishable. Passive terminals without an ESC are exempt, as for identity-product-code-missing.",
+    .bad_example = "<Type ProductCode=\"#x00001001\">EX-DIO-8</Type>",
+    .good_example = "<Type ProductCode=\"#x00001001\" RevisionNo=\"#x00010000\">EX-DIO-8</Type>",
+    .check = check_revision_missing,
+};
 
 // ---- identity-group-type-unresolved ---------------------------------------------------------
 
@@ -178,6 +237,20 @@ void check_group_type(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule identity_group_type_unresolved{
+    .id = "identity-group-type-unresolved",
+    .default_severity = Severity::error,
+    .summary = "Device GroupType missing or naming no Group of the file",
+    .rationale =
+        "Device/GroupType is required and refers to Descriptions/Groups/Group/Type; configuration tools sort the "
+        "device into that group and take the group's name and image from it (ETG.2000 DeviceType; SOES "
+        "doc/tutorial.txt: 'Reference to a group ... Groups:Group:Type'; CTT TF-1300 1-8). The schema declares no "
+        "key/keyref for it, so only a semantic check finds a misspelt group.",
+    .bad_example = "<Group><Type>DigitalIO</Type>...</Group> ... <GroupType>DigitalIo</GroupType>",
+    .good_example = "<Group><Type>DigitalIO</Type>...</Group> ... <GroupType>DigitalIO</GroupType>",
+    .check = check_group_type,
+};
+
 // ---- identity-name-missing ------------------------------------------------------------------
 
 void check_name_missing(const EsiDocument& document, RuleContext& context) {
@@ -194,6 +267,23 @@ void check_name_missing(const EsiDocument& document, RuleContext& context) {
                                                "conformance tool checks it (CTT TF-1300 1-6)");
     }
 }
+
+constexpr Rule identity_name_missing{
+    .id = "identity-name-missing",
+    .default_severity = Severity::error,
+    .summary = "Vendor, Group or Device without a Name",
+    .rationale =
+        "Names are what users see in the device catalogue and what goes into the SII strings category (device name "
+        "and group name indices of the General category, ETG.2010). The schema requires at least one Name for each "
+        "of Vendor, Group and Device, and the conformance tool checks the device name (ETG.2000 VendorType, "
+        "GroupType, DeviceType; CTT TF-1300 1-6). An empty Name element counts as missing.",
+    .bad_example =
+        "<Device Physics=\"YY\"><Type ProductCode=\"#x1001\" RevisionNo=\"1\">EX-DIO-8</Type><GroupType>DigitalIO</GroupType>",
+    .good_example =
+        "<Device Physics=\"YY\"><Type ProductCode=\"#x1001\" RevisionNo=\"1\">EX-DIO-8</Type><Name LcId=\"1033\">EX-DIO-8 "
+        "8 inputs</Name><GroupType>DigitalIO</GroupType>",
+    .check = check_name_missing,
+};
 
 // ---- identity-duplicate ---------------------------------------------------------------------
 
@@ -216,6 +306,24 @@ void check_duplicate(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule identity_duplicate{
+    .id = "identity-duplicate",
+    .default_severity = Severity::error,
+    .summary = "Two devices of one file with the same ProductCode and RevisionNo",
+    .rationale =
+        "A master picks the description whose (ProductCode, RevisionNo) matches the SII; with two candidates it takes "
+        "one of them, and which one differs between tools. Each variant needs its own identity (ETG.2010 SII words "
+        "0x0A-0x0D hold exactly ProductCode and RevisionNo; leducp/KickCAT PR #386/#426 select the device in a "
+        "multi-device file by product code and revision).",
+    .bad_example =
+        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\">EX-DIO-8</Type> ... <Type ProductCode=\"#x1001\" "
+        "RevisionNo=\"#x10000\">EX-DIO-8-HD</Type>",
+    .good_example =
+        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\">EX-DIO-8</Type> ... <Type ProductCode=\"#x1002\" "
+        "RevisionNo=\"#x10000\">EX-DIO-8-HD</Type>",
+    .check = check_duplicate,
+};
 
 // ---- identity-1018-mismatch -----------------------------------------------------------------
 
@@ -266,9 +374,47 @@ void check_1018(const EsiDocument& document, RuleContext& context, IdentityPart 
 
 void check_1018_device(const EsiDocument& document, RuleContext& context) { check_1018(document, context, IdentityPart::device); }
 
+constexpr Rule identity_1018_mismatch{
+    .id = "identity-1018-mismatch",
+    .default_severity = Severity::error,
+    .summary = "0x1018 vendor id or product code defaults disagree with Vendor/Id or Device/Type",
+    .rationale =
+        "The identity object 0x1018 (sub 1 vendor id, 2 product code, 3 revision) must report the same identity as "
+        "the description and the SII; the conformance tool compares them (CTT TF-1300 4-1 'ESI OD Identity Info', "
+        "TF-2301 0x1018). Defaults are read from DefaultValue or from DefaultData, which holds the bytes "
+        "little-endian (\"02000000\" is 2). A copied dictionary that still carries the template's product code is the "
+        "usual cause (ETG sample ModulesSlots_CiA402; generator templates). A stale revision is "
+        "identity-1018-revision-stale.",
+    .bad_example =
+        "<Type ProductCode=\"#x1001\" ...> ... <SubItem><Name>Product code</Name><Info><DefaultData>02100000</DefaultData>",
+    .good_example =
+        "<Type ProductCode=\"#x1001\" ...> ... <SubItem><Name>Product code</Name><Info><DefaultData>01100000</DefaultData>",
+    .check = check_1018_device,
+};
+
+// ---- identity-1018-revision-stale -----------------------------------------------------------
+
 void check_1018_revision(const EsiDocument& document, RuleContext& context) {
     check_1018(document, context, IdentityPart::revision);
 }
+
+constexpr Rule identity_1018_revision_stale{
+    .id = "identity-1018-revision-stale",
+    .default_severity = Severity::warning,
+    .summary = "0x1018:03 revision default differs from Device/Type@RevisionNo",
+    .rationale =
+        "0x1018:03 reports the revision the firmware runs; its default in the description should be the RevisionNo of "
+        "the Type it belongs to (CTT TF-1300 4-1 compares them). Catalogues that share one dictionary across "
+        "revisions often keep an older revision here: the master still matches the device by SII and Type, so this is "
+        "a warning, unlike a wrong vendor id or product code (identity-1018-mismatch). Beckhoff's own catalogues do "
+        "this for about 60 terminals (e.g. Beckhoff EL3xxx.xml and EL66xx.xml in DiamondLightSource/ethercat "
+        "etc/xml/).",
+    .bad_example =
+        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\"> ... <SubItem><Name>Revision</Name><Info><DefaultValue>#x00020000</DefaultValue>",
+    .good_example =
+        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\"> ... <SubItem><Name>Revision</Name><Info><DefaultValue>#x00010000</DefaultValue>",
+    .check = check_1018_revision,
+};
 
 // ---- identity-name-lcid-duplicate -----------------------------------------------------------
 
@@ -302,100 +448,34 @@ void check_name_lcid_duplicate(const EsiDocument& document, RuleContext& context
     }
 }
 
+constexpr Rule identity_name_lcid_duplicate{
+    .id = "identity-name-lcid-duplicate",
+    .default_severity = Severity::warning,
+    .summary = "Two Names with the same LcId on one element",
+    .rationale =
+        "Names are localized by LcId (default 1033, English); a tool shows one Name per language, so a second Name "
+        "with the same LcId is dropped or overrides the first depending on the tool, and SII writers emit only one "
+        "(ETG.2000 NameType; ethercat-rs/ethercat-esi #1 broke on repeated Name elements).",
+    .bad_example = "<Name LcId=\"1033\">EX-DIO-8</Name><Name>EX-DIO-8 8 inputs</Name>",
+    .good_example = "<Name LcId=\"1033\">EX-DIO-8</Name><Name LcId=\"1031\">EX-DIO-8 8 Eingänge</Name>",
+    .check = check_name_lcid_duplicate,
+};
+
 }  // namespace
 
 void add_identity(std::vector<Rule>& out) {
-    out.push_back(Rule{
-        "identity-vendor-id-missing", Severity::error, "The file has no Vendor or the Vendor has no Id",
-        "Every device is identified by the triple (Vendor Id, ProductCode, RevisionNo): the master reads it from SII "
-        "words 0x08-0x0D and looks for the matching description. Without Vendor/Id no device of the file can be "
-        "matched, and the SII words 0x08-0x09 cannot be generated (ETG.2000 VendorType: Id is required; ETG.2010 "
-        "SII header; CTT TF-1300 2-1).",
-        "<Vendor><Name>Example GmbH</Name></Vendor>", "<Vendor><Id>#x00000E4A</Id><Name>Example GmbH</Name></Vendor>",
-        &check_vendor_id_missing});
-    out.push_back(Rule{
-        "identity-vendor-id-zero", Severity::warning, "Vendor Id 0 is not an assigned vendor id",
-        "Vendor ids are assigned by the EtherCAT Technology Group (1 is the ETG itself, 2 Beckhoff); 0 is not "
-        "assigned to anybody. Generator templates and prototypes ship with 0 (the kubabuda/EEPROM_generator default "
-        "project in the corpus), and then every such device looks alike to a master that selects descriptions by "
-        "(Vendor Id, ProductCode, RevisionNo) (ETG.2000 VendorType Id; ETG.2010 SII words 0x08-0x09).",
-        "<Vendor><Id>0</Id><Name>Prototype</Name></Vendor>", "<Vendor><Id>#x00000E4A</Id><Name>Example GmbH</Name></Vendor>",
-        &check_vendor_id_zero});
-    out.push_back(Rule{
-        "identity-product-code-missing", Severity::error, "Device Type without ProductCode",
-        "The product code goes into SII words 0x0A-0x0B and 0x1018:02, and masters select the device description by "
-        "it (ETG.2000 Device/Type; ETG.2010 SII header; CTT TF-1300 2-2). The schema leaves the attribute optional, "
-        "but a description without it cannot be matched to any device on the bus. Passive "
-        "terminals without an ESC (no Sm, Fmmu, Mailbox, PDO, Dc or Profile, such as Beckhoff's EL9xxx end "
-        "terminals) are exempt: they have no identity to read.",
-        "<Type RevisionNo=\"#x00010000\">EX-DIO-8</Type>",
-        "<Type ProductCode=\"#x00001001\" RevisionNo=\"#x00010000\">EX-DIO-8</Type>", &check_product_code_missing});
-    out.push_back(Rule{
-        "identity-revision-missing", Severity::error, "Device Type without RevisionNo",
-        "The revision number goes into SII words 0x0C-0x0D and 0x1018:03; masters compare it with the description "
-        "(Type@CheckRevisionNo) and the conformance tool checks it (ETG.2000 Device/Type; CTT TF-1300 1-2, 2-3). "
-        "Several revisions of one product usually live in one file, so a missing revision makes them "
-        "indistinguishable. Passive terminals without an ESC are exempt, as for identity-product-code-missing.",
-        "<Type ProductCode=\"#x00001001\">EX-DIO-8</Type>",
-        "<Type ProductCode=\"#x00001001\" RevisionNo=\"#x00010000\">EX-DIO-8</Type>", &check_revision_missing});
-    out.push_back(Rule{
-        "identity-group-type-unresolved", Severity::error, "Device GroupType missing or naming no Group of the file",
-        "Device/GroupType is required and refers to Descriptions/Groups/Group/Type; configuration tools sort the "
-        "device into that group and take the group's name and image from it (ETG.2000 DeviceType; SOES "
-        "doc/tutorial.txt: 'Reference to a group ... Groups:Group:Type'; CTT TF-1300 1-8). The schema declares no "
-        "key/keyref for it, so only a semantic check finds a misspelt group.",
-        "<Group><Type>DigitalIO</Type>...</Group> ... <GroupType>DigitalIo</GroupType>",
-        "<Group><Type>DigitalIO</Type>...</Group> ... <GroupType>DigitalIO</GroupType>", &check_group_type});
-    out.push_back(Rule{
-        "identity-name-missing", Severity::error, "Vendor, Group or Device without a Name",
-        "Names are what users see in the device catalogue and what goes into the SII strings category (device name "
-        "and group name indices of the General category, ETG.2010). The schema requires at least one Name for each "
-        "of Vendor, Group and Device, and the conformance tool checks the device name (ETG.2000 VendorType, "
-        "GroupType, DeviceType; CTT TF-1300 1-6). An empty Name element counts as missing.",
-        "<Device Physics=\"YY\"><Type ProductCode=\"#x1001\" RevisionNo=\"1\">EX-DIO-8</Type><GroupType>DigitalIO</GroupType>",
-        "<Device Physics=\"YY\"><Type ProductCode=\"#x1001\" RevisionNo=\"1\">EX-DIO-8</Type><Name LcId=\"1033\">EX-DIO-8 "
-        "8 inputs</Name><GroupType>DigitalIO</GroupType>",
-        &check_name_missing});
-    out.push_back(Rule{
-        "identity-duplicate", Severity::error, "Two devices of one file with the same ProductCode and RevisionNo",
-        "A master picks the description whose (ProductCode, RevisionNo) matches the SII; with two candidates it takes "
-        "one of them, and which one differs between tools. Each variant needs its own identity (the gen_od review "
-        "in the domain notes: 'every variant has a distinct identity'; leducp/KickCAT PR #386/#426 select the device in a "
-        "multi-device file by product code and revision).",
-        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\">EX-DIO-8</Type> ... <Type ProductCode=\"#x1001\" "
-        "RevisionNo=\"#x10000\">EX-DIO-8-HD</Type>",
-        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\">EX-DIO-8</Type> ... <Type ProductCode=\"#x1002\" "
-        "RevisionNo=\"#x10000\">EX-DIO-8-HD</Type>",
-        &check_duplicate});
-    out.push_back(Rule{
-        "identity-1018-mismatch", Severity::error, "0x1018 vendor id or product code defaults disagree with Vendor/Id or Device/Type",
-        "The identity object 0x1018 (sub 1 vendor id, 2 product code, 3 revision) must report the same identity as "
-        "the description and the SII; the conformance tool compares them (CTT TF-1300 4-1 'ESI OD Identity Info', "
-        "TF-2301 0x1018). Defaults are read from DefaultValue or from DefaultData, which holds the bytes "
-        "little-endian (\"02000000\" is 2). A copied dictionary that still carries the template's product code is the "
-        "usual cause (ETG sample ModulesSlots_CiA402; generator templates). A stale revision is "
-        "identity-1018-revision-stale.",
-        "<Type ProductCode=\"#x1001\" ...> ... <SubItem><Name>Product code</Name><Info><DefaultData>02100000</DefaultData>",
-        "<Type ProductCode=\"#x1001\" ...> ... <SubItem><Name>Product code</Name><Info><DefaultData>01100000</DefaultData>",
-        &check_1018_device});
-    out.push_back(Rule{
-        "identity-1018-revision-stale", Severity::warning, "0x1018:03 revision default differs from Device/Type@RevisionNo",
-        "0x1018:03 reports the revision the firmware runs; its default in the description should be the RevisionNo of "
-        "the Type it belongs to (CTT TF-1300 4-1 compares them). Catalogues that share one dictionary across revisions "
-        "often keep an older revision here: the master still matches the device by SII and Type, so this is a warning, "
-        "unlike a wrong vendor id or product code (identity-1018-mismatch). Seen in about 60 Beckhoff terminal "
-        "descriptions of the corpus.",
-        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\"> ... <SubItem><Name>Revision</Name><Info><DefaultValue>#x00020000</DefaultValue>",
-        "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\"> ... <SubItem><Name>Revision</Name><Info><DefaultValue>#x00010000</DefaultValue>",
-        &check_1018_revision});
-    out.push_back(Rule{
-        "identity-name-lcid-duplicate", Severity::warning, "Two Names with the same LcId on one element",
-        "Names are localized by LcId (default 1033, English); a tool shows one Name per language, so a second Name "
-        "with the same LcId is dropped or overrides the first depending on the tool, and SII writers emit only one "
-        "(ETG.2000 NameType; domain note S29 'at most one name per LcId'; ethercat-rs/ethercat-esi #1 broke on "
-        "repeated Name elements).",
-        "<Name LcId=\"1033\">EX-DIO-8</Name><Name>EX-DIO-8 8 inputs</Name>",
-        "<Name LcId=\"1033\">EX-DIO-8</Name><Name LcId=\"1031\">EX-DIO-8 8 Eingänge</Name>", &check_name_lcid_duplicate});
+    out.insert(out.end(), {
+        identity_vendor_id_missing,
+        identity_vendor_id_zero,
+        identity_product_code_missing,
+        identity_revision_missing,
+        identity_group_type_unresolved,
+        identity_name_missing,
+        identity_duplicate,
+        identity_1018_mismatch,
+        identity_1018_revision_stale,
+        identity_name_lcid_duplicate,
+    });
 }
 
 }  // namespace esi::rules

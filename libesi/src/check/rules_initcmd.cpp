@@ -56,8 +56,8 @@ void for_each_init_cmd(const EsiDocument& document, F&& f) {
 }
 
 // EtherCAT state machine transitions (ETG.1000.6 §6.4 / ETG.1000.4 ESM): Init, Pre-Operational,
-// Safe-Operational, Operational, Bootstrap. The servo manuals' Tabelle 8 lists the nine without
-// bootstrap.
+// Safe-Operational, Operational, Bootstrap. The item C series and Afag SE-Power EtherCAT manuals
+// list the nine without bootstrap (Tabelle 8).
 constexpr std::string_view esm_transitions[] = {"IP", "PI", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "IB", "BI"};
 // The transitions schema 1.17 allows for InitCmds of every protocol (AoE, EoE, CoE, SoE, module CoE).
 constexpr std::string_view init_cmd_transitions[] = {"IP", "PS", "SO", "SP", "OP", "OS"};
@@ -98,6 +98,23 @@ void check_transition_unknown(const EsiDocument& document, RuleContext& context)
     });
 }
 
+constexpr Rule initcmd_transition_unknown{
+    .id = "initcmd-transition-unknown",
+    .default_severity = Severity::error,
+    .summary = "InitCmd Transition that is not an EtherCAT state transition",
+    .rationale =
+        "A Transition names the state change at which the master sends the command: two letters from I (Init), P "
+        "(Pre-Operational), S (Safe-Operational), O (Operational), B (Bootstrap), e.g. PS = Pre-Op -> Safe-Op "
+        "(ETG.1000.6 state machine; ETG.2000 InitCmd; the item C series and Afag SE-Power EtherCAT manuals, §6.2 "
+        "Tabelle 8 and §6.7.4). Anything else, including lower case, matches no transition, so the master never sends "
+        "the command; the schema enumeration rejects it (leducp/KickCAT reports 'unknown transition').",
+    .bad_example =
+        "<InitCmd><Transition>PO</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+    .good_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+    .check = check_transition_unknown,
+};
+
 // ---- initcmd-transition-not-allowed ---------------------------------------------------------
 
 std::string_view transition_reason(std::string_view t) {
@@ -116,6 +133,25 @@ void check_transition_not_allowed(const EsiDocument& document, RuleContext& cont
     });
 }
 
+constexpr Rule initcmd_transition_not_allowed{
+    .id = "initcmd-transition-not-allowed",
+    .default_severity = Severity::warning,
+    .summary = "InitCmd at a transition the schema does not allow (PI, SI, OI, IB, BI)",
+    .rationale =
+        "Schema 1.17 allows InitCmd transitions IP, PS, SO, SP, OP and OS for every protocol (AoE, EoE, CoE, SoE). "
+        "The manuals of the item C series and Afag SE-Power servo controllers list all nine state-machine transitions "
+        "(IP, PI, PS, SP, SO, OS, OP, SI, OI; Tabelle 8 and 15) because their Transition column refers to the state "
+        "machine, but the transitions down to Init (PI, SI, OI) are not start-up steps, and Bootstrap transitions "
+        "(IB, BI) run on the bootstrap mailbox, which carries FoE only. Masters that follow the schema never send "
+        "such a command, so it is reported as a warning rather than an error: the value is a real transition, but the "
+        "command silently does nothing.",
+    .bad_example =
+        "<InitCmd><Transition>PI</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+    .good_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+    .check = check_transition_not_allowed,
+};
+
 // ---- initcmd-transition-missing -------------------------------------------------------------
 
 void check_transition_missing(const EsiDocument& document, RuleContext& context) {
@@ -124,6 +160,20 @@ void check_transition_missing(const EsiDocument& document, RuleContext& context)
         context.report(site.cmd->pos, describe(site) + " has no Transition, so a master never sends it");
     });
 }
+
+constexpr Rule initcmd_transition_missing{
+    .id = "initcmd-transition-missing",
+    .default_severity = Severity::error,
+    .summary = "InitCmd without Transition",
+    .rationale =
+        "Transition is required (maxOccurs unbounded, at least one): without it the master does not know when to send "
+        "the command, and it is never sent (ETG.2000 InitCmd; leducp/KickCAT rejects 'InitCmd without "
+        "Transition').",
+    .bad_example = "<InitCmd><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+    .good_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+    .check = check_transition_missing,
+};
 
 // ---- initcmd-data-hex -----------------------------------------------------------------------
 
@@ -147,7 +197,23 @@ void check_data_hex(const EsiDocument& document, RuleContext& context) {
     });
 }
 
-// ---- initcmd-target-missing / initcmd-data-length --------------------------------------------
+constexpr Rule initcmd_data_hex{
+    .id = "initcmd-data-hex",
+    .default_severity = Severity::error,
+    .summary = "InitCmd Data that is not even-length hexBinary",
+    .rationale =
+        "InitCmd Data is xs:hexBinary: two hex digits per byte, no prefix, written in the byte order of the SDO "
+        "(little-endian for numbers). An odd number of digits has no byte reading: the example in §7 of the item C "
+        "series and Afag SE-Power EtherCAT manuals writes the 16-bit Controlword 0x6040 with `<Data>0</Data>`, which "
+        "tools pad, truncate or reject differently (leducp/KickCAT: 'odd-length hex binary').",
+    .bad_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x6040</Index><SubIndex>0</SubIndex><Data>0</Data></InitCmd>",
+    .good_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x6040</Index><SubIndex>0</SubIndex><Data>0000</Data></InitCmd>",
+    .check = check_data_hex,
+};
+
+// ---- initcmd-target-missing -----------------------------------------------------------------
 
 // CoE InitCmds whose target can be looked up: a dictionary exists and the index is absolute
 // (IndexDependOnSlot adds a slot offset the description alone does not fix).
@@ -188,6 +254,26 @@ void check_target_missing(const EsiDocument& document, RuleContext& context) {
     });
 }
 
+constexpr Rule initcmd_target_missing{
+    .id = "initcmd-target-missing",
+    .default_severity = Severity::warning,
+    .summary = "CoE InitCmd writing an object or sub-index the Dictionary lacks",
+    .rationale =
+        "A CoE InitCmd is an SDO download to Index:SubIndex. When the device's Dictionary does not have the target, "
+        "the slave answers with abort 0x06020000 or 0x06090011 and the master stops the state change "
+        "(OpenEtherCATsociety/SOEM #402 'index:0016.00 error:06020000 The object does not exist'; ETG.1000.6 SDO "
+        "abort codes). Checked only when the device (or module) has a Dictionary; commands whose index depends on the "
+        "slot are skipped. A warning, not an error: ESI dictionaries are offline copies that vendors sometimes trim "
+        "(Beckhoff AX2000 writes 0x60C2 at start-up but lists no 0x60C2), so either the command or the dictionary is "
+        "wrong.",
+    .bad_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x6061</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd> "
+        "(no object 0x6061)",
+    .good_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
+    .check = check_target_missing,
+};
+
 // Types whose value has a fixed size: a shorter download is refused (SDO abort 0x06070013).
 bool fixed_size(const ObjectEntry& entry) {
     if (!entry.basic) return false;
@@ -201,6 +287,8 @@ bool fixed_size(const ObjectEntry& entry) {
         default: return false;
     }
 }
+
+// ---- initcmd-data-length --------------------------------------------------------------------
 
 void check_data_length(const EsiDocument& document, RuleContext& context) {
     for_each_coe_target(document, context, [&](const InitCmdSite& site, const DictionaryIndex& index) {
@@ -235,70 +323,36 @@ void check_data_length(const EsiDocument& document, RuleContext& context) {
     });
 }
 
-}  // namespace
-
-void add_initcmd(std::vector<Rule>& out) {
-    out.push_back(Rule{
-        "initcmd-transition-unknown", Severity::error, "InitCmd Transition that is not an EtherCAT state transition",
-        "A Transition names the state change at which the master sends the command: two letters from I (Init), P "
-        "(Pre-Operational), S (Safe-Operational), O (Operational), B (Bootstrap), e.g. PS = Pre-Op -> Safe-Op "
-        "(ETG.1000.6 state machine; ETG.2000 InitCmd; servo manuals §6.2 Tabelle 8, §6.7.4). Anything else, including "
-        "lower case, matches no transition, so the master never sends the command; the schema enumeration rejects it "
-        "(leducp/KickCAT reports 'unknown transition').",
-        "<InitCmd><Transition>PO</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
-        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
-        &check_transition_unknown});
-    out.push_back(Rule{
-        "initcmd-transition-not-allowed", Severity::warning, "InitCmd at a transition the schema does not allow (PI, SI, OI, IB, BI)",
-        "Schema 1.17 allows InitCmd transitions IP, PS, SO, SP, OP and OS for every protocol (AoE, EoE, CoE, SoE). The "
-        "servo manuals list all nine state-machine transitions (IP, PI, PS, SP, SO, OS, OP, SI, OI; Tabelle 8/15) "
-        "because their Transition column refers to the state machine, but the transitions down to Init (PI, SI, OI) "
-        "are not start-up steps, and Bootstrap transitions (IB, BI) run on the bootstrap mailbox, which carries FoE "
-        "only. Masters that follow the schema never send such a command, so it is reported as a warning rather than "
-        "an error: the value is a real transition, but the command silently does nothing.",
-        "<InitCmd><Transition>PI</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
-        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
-        &check_transition_not_allowed});
-    out.push_back(Rule{
-        "initcmd-transition-missing", Severity::error, "InitCmd without Transition",
-        "Transition is required (maxOccurs unbounded, at least one): without it the master does not know when to send "
-        "the command, and it is never sent (ETG.2000 InitCmd; leducp/KickCAT rejects 'InitCmd without "
-        "Transition').",
-        "<InitCmd><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
-        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
-        &check_transition_missing});
-    out.push_back(Rule{
-        "initcmd-data-hex", Severity::error, "InitCmd Data that is not even-length hexBinary",
-        "InitCmd Data is xs:hexBinary: two hex digits per byte, no prefix, written in the byte order of the SDO "
-        "(little-endian for numbers). An odd number of digits has no byte reading: the servo manuals' own example "
-        "writes the 16-bit Controlword 0x6040 with `<Data>0</Data>` (servo manuals §7), which tools pad, truncate or "
-        "reject differently (leducp/KickCAT: 'odd-length hex binary').",
-        "<InitCmd><Transition>PS</Transition><Index>#x6040</Index><SubIndex>0</SubIndex><Data>0</Data></InitCmd>",
-        "<InitCmd><Transition>PS</Transition><Index>#x6040</Index><SubIndex>0</SubIndex><Data>0000</Data></InitCmd>",
-        &check_data_hex});
-    out.push_back(Rule{
-        "initcmd-data-length", Severity::error, "InitCmd Data longer (or, for numbers, shorter) than the target",
+constexpr Rule initcmd_data_length{
+    .id = "initcmd-data-length",
+    .default_severity = Severity::error,
+    .summary = "InitCmd Data longer (or, for numbers, shorter) than the target",
+    .rationale =
         "An SDO download must carry exactly the size of a numeric target; the slave refuses other lengths with abort "
         "0x06070012 (too long) or 0x06070013 (too short) and the master stops the start-up (ETG.1000.6 SDO abort "
         "codes). Strings and domains may be shorter. With CompleteAccess the data may fill the whole object, so it is "
-        "compared with the object's BitSize. Checked when the device has a Dictionary (servo manuals §7: Controlword, "
-        "16 bits, written with a 1-digit Data; R12 limits their SDOs to 4 bytes).",
+        "compared with the object's BitSize. Checked when the device has a Dictionary (the item C series and Afag "
+        "SE-Power EtherCAT manuals write the 16-bit Controlword with a 1-digit Data in §7 and limit SDOs to 4 bytes "
+        "in §6.3 and Tabelle 15).",
+    .bad_example =
         "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>0300</Data></InitCmd> "
         "(0x6060 is SINT)",
+    .good_example =
         "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
-        &check_data_length});
-    out.push_back(Rule{
-        "initcmd-target-missing", Severity::warning, "CoE InitCmd writing an object or sub-index the Dictionary lacks",
-        "A CoE InitCmd is an SDO download to Index:SubIndex. When the device's Dictionary does not have the target, "
-        "the slave answers with abort 0x06020000 or 0x06090011 and the master stops the state change "
-        "(OpenEtherCATsociety/SOEM #402 'index:0016.00 error:06020000 The object does not exist'; servo manuals D7). "
-        "Checked only when the device (or module) has a Dictionary; commands whose index depends on the slot are "
-        "skipped. A warning, not an error: ESI dictionaries are offline copies that vendors sometimes trim (Beckhoff "
-        "AX2000 writes 0x60C2 at start-up but lists no 0x60C2), so either the command or the dictionary is wrong.",
-        "<InitCmd><Transition>PS</Transition><Index>#x6061</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd> "
-        "(no object 0x6061)",
-        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>03</Data></InitCmd>",
-        &check_target_missing});
+    .check = check_data_length,
+};
+
+}  // namespace
+
+void add_initcmd(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        initcmd_transition_unknown,
+        initcmd_transition_not_allowed,
+        initcmd_transition_missing,
+        initcmd_data_hex,
+        initcmd_data_length,
+        initcmd_target_missing,
+    });
 }
 
 }  // namespace esi::rules

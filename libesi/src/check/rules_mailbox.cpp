@@ -23,6 +23,21 @@ void check_data_link_layer(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule mailbox_data_link_layer{
+    .id = "mailbox-data-link-layer",
+    .default_severity = Severity::warning,
+    .summary = "Mailbox without DataLinkLayer=\"true\"",
+    .rationale =
+        "The mailbox data link layer (counter and repeat request, ETG.1000.4 mailbox) lets a master recover lost "
+        "mailbox frames; the conformance tool checks that devices with a mailbox declare it (CTT TF-1300 1-9 "
+        "'Device:Mailbox:DataLinkLayer'), the SOES tutorial marks the attribute mandatory, and the SII general "
+        "category carries it as flag MBoxDataLinkLayer (ETG.2010). The schema default is false, so leaving it out "
+        "declares no support.",
+    .bad_example = "<Mailbox><CoE SdoInfo=\"true\"/></Mailbox>",
+    .good_example = "<Mailbox DataLinkLayer=\"true\"><CoE SdoInfo=\"true\"/></Mailbox>",
+    .check = check_data_link_layer,
+};
+
 // ---- mailbox-sm-missing ---------------------------------------------------------------------
 
 void check_sm_missing(const EsiDocument& document, RuleContext& context) {
@@ -44,6 +59,22 @@ void check_sm_missing(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule mailbox_sm_missing{
+    .id = "mailbox-sm-missing",
+    .default_severity = Severity::error,
+    .summary = "A Mailbox without MBoxOut and MBoxIn SyncManagers",
+    .rationale =
+        "Mailbox protocols travel through the standard mailbox: SM0 (MBoxOut, master -> slave) and SM1 (MBoxIn, slave "
+        "-> master), whose addresses and sizes also fill SII words 0x18-0x1B (ETG.2010; SOES tutorial; the item C "
+        "series and Afag SE-Power EtherCAT manuals, §6.1.1 and Tabelle 5). A Mailbox element without them advertises "
+        "protocols the master cannot reach.",
+    .bad_example = "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Mailbox DataLinkLayer=\"true\"><CoE/></Mailbox>",
+    .good_example =
+        "<Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... ControlByte=\"#x22\">MBoxIn</Sm>...<Mailbox "
+        "DataLinkLayer=\"true\"><CoE/></Mailbox>",
+    .check = check_sm_missing,
+};
+
 // ---- mailbox-protocol-missing ---------------------------------------------------------------
 
 void check_protocol_missing(const EsiDocument& document, RuleContext& context) {
@@ -55,34 +86,27 @@ void check_protocol_missing(const EsiDocument& document, RuleContext& context) {
     }
 }
 
-}  // namespace
-
-void add_mailbox(std::vector<Rule>& out) {
-    out.push_back(Rule{
-        "mailbox-data-link-layer", Severity::warning, "Mailbox without DataLinkLayer=\"true\"",
-        "The mailbox data link layer (counter and repeat request, ETG.1000.4 mailbox) lets a master recover lost "
-        "mailbox frames; the conformance tool checks that devices with a mailbox declare it (CTT TF-1300 1-9 "
-        "'Device:Mailbox:DataLinkLayer'), the SOES tutorial marks the attribute mandatory, and the SII general "
-        "category carries it as flag MBoxDataLinkLayer (ETG.2010). The schema default is false, so leaving it out "
-        "declares no support.",
-        "<Mailbox><CoE SdoInfo=\"true\"/></Mailbox>", "<Mailbox DataLinkLayer=\"true\"><CoE SdoInfo=\"true\"/></Mailbox>",
-        &check_data_link_layer});
-    out.push_back(Rule{
-        "mailbox-sm-missing", Severity::error, "A Mailbox without MBoxOut and MBoxIn SyncManagers",
-        "Mailbox protocols travel through the standard mailbox: SM0 (MBoxOut, master -> slave) and SM1 (MBoxIn, slave "
-        "-> master), whose addresses and sizes also fill SII words 0x18-0x1B (ETG.2010; SOES tutorial; servo manuals "
-        "§6.1.1 R1). A Mailbox element without them advertises protocols the master cannot reach.",
-        "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Mailbox DataLinkLayer=\"true\"><CoE/></Mailbox>",
-        "<Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... ControlByte=\"#x22\">MBoxIn</Sm>...<Mailbox "
-        "DataLinkLayer=\"true\"><CoE/></Mailbox>",
-        &check_sm_missing});
-    out.push_back(Rule{
-        "mailbox-protocol-missing", Severity::warning, "A Mailbox that names no protocol",
+constexpr Rule mailbox_protocol_missing{
+    .id = "mailbox-protocol-missing",
+    .default_severity = Severity::warning,
+    .summary = "A Mailbox that names no protocol",
+    .rationale =
         "The protocols listed under Mailbox (AoE, EoE, CoE, FoE, SoE, VoE) become the SII mailbox protocol word 0x1C "
         "(ETG.2010; CTT TF-1300 2-5 compares them). An empty Mailbox advertises a mailbox that carries nothing, so "
         "masters skip it; either list the protocols the firmware serves or remove the element.",
-        "<Mailbox DataLinkLayer=\"true\"/>", "<Mailbox DataLinkLayer=\"true\"><CoE SdoInfo=\"true\"/></Mailbox>",
-        &check_protocol_missing});
+    .bad_example = "<Mailbox DataLinkLayer=\"true\"/>",
+    .good_example = "<Mailbox DataLinkLayer=\"true\"><CoE SdoInfo=\"true\"/></Mailbox>",
+    .check = check_protocol_missing,
+};
+
+}  // namespace
+
+void add_mailbox(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        mailbox_data_link_layer,
+        mailbox_sm_missing,
+        mailbox_protocol_missing,
+    });
 }
 
 }  // namespace esi::rules

@@ -97,6 +97,23 @@ void check_direction(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule sm_direction_mismatch{
+    .id = "sm-direction-mismatch",
+    .default_severity = Severity::error,
+    .summary = "SM text and ControlByte direction disagree",
+    .rationale =
+        "ControlByte bits 3:2 set the SyncManager direction (00: the master reads, 01: the master writes; ESC "
+        "register 0x0804+8n, ETG.1000.4). MBoxOut and Outputs carry data from the master to the slave and need the "
+        "write direction (#x26, #x24, #x64); MBoxIn and Inputs need the read direction (#x22, #x20). A swapped "
+        "direction makes the ESC refuse the master's writes or the PDI's updates, and the device stays in PRE-OP with "
+        "an SM configuration error (SOES tutorial SM table; OpenEtherCATsociety/SOEM #247, where the maintainer lists "
+        "the canonical #x26/#x22/#x24/#x20 block; SOES soes/esc.c ESC_checkSM23 keeps the device in PRE-OP when the "
+        "SM2/SM3 control bytes differ from its own).",
+    .bad_example = "<Sm StartAddress=\"#x1100\" ControlByte=\"#x20\" Enable=\"1\">Outputs</Sm>",
+    .good_example = "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" Enable=\"1\">Outputs</Sm>",
+    .check = check_direction,
+};
+
 // ---- sm-mailbox-mode ------------------------------------------------------------------------
 
 void check_mailbox_mode(const EsiDocument& document, RuleContext& context) {
@@ -112,6 +129,22 @@ void check_mailbox_mode(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule sm_mailbox_mode{
+    .id = "sm-mailbox-mode",
+    .default_severity = Severity::error,
+    .summary = "A mailbox SM whose ControlByte selects buffered mode",
+    .rationale =
+        "MBoxOut and MBoxIn must run in mailbox (single-buffer, handshake) mode, ControlByte bits 1:0 = 10: #x26 for "
+        "the master's requests and #x22 for the slave's answers. In buffered (3-buffer) mode the ESC overwrites "
+        "unread messages and occupies three times the size (ESC register 0x0804+8n; SOES tutorial; "
+        "OpenEtherCATsociety/SOEM #247 lists the canonical #x26/#x22 pair; in 95 public ESI files, Beckhoff's "
+        "catalogues in DiamondLightSource/ethercat among them, 500 MBoxOut and 500 MBoxIn SMs use exactly these; the "
+        "only others are in the BogusServo.xml test file of zultron/hw_device_mgr).",
+    .bad_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x24\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
+    .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
+    .check = check_mailbox_mode,
+};
 
 // ---- sm-control-byte-reserved ---------------------------------------------------------------
 
@@ -135,6 +168,20 @@ void check_control_byte_reserved(const EsiDocument& document, RuleContext& conte
     }
 }
 
+constexpr Rule sm_control_byte_reserved{
+    .id = "sm-control-byte-reserved",
+    .default_severity = Severity::error,
+    .summary = "ControlByte with reserved bits or values",
+    .rationale =
+        "The SyncManager control register (0x0804+8n) reserves operation modes 01 and 11 (bits 1:0), directions 10 "
+        "and 11 (bits 3:2) and bit 7 (ETG.1000.4; Beckhoff ESC datasheet section II). A master copies the ControlByte "
+        "into the register as it is, so a reserved value gives undefined ESC behaviour. Values above #xFF do not fit "
+        "the register at all.",
+    .bad_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x33\" Enable=\"1\">MBoxOut</Sm>",
+    .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" Enable=\"1\">MBoxOut</Sm>",
+    .check = check_control_byte_reserved,
+};
+
 // ---- sm-mailbox-position --------------------------------------------------------------------
 
 void check_mailbox_position(const EsiDocument& document, RuleContext& context) {
@@ -149,6 +196,25 @@ void check_mailbox_position(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule sm_mailbox_position{
+    .id = "sm-mailbox-position",
+    .default_severity = Severity::warning,
+    .summary = "Mailbox SMs not at SM0 (out) and SM1 (in)",
+    .rationale =
+        "The standard mailbox uses SM0 for master -> slave (MBoxOut) and SM1 for slave -> master (MBoxIn): the SII "
+        "standard mailbox words 0x18-0x1B and 0x1C00:01/02 describe exactly these two, and masters such as SOEM "
+        "program SM0/SM1 as the mailbox from those words (SOES tutorial; the item C series and Afag SE-Power EtherCAT "
+        "manuals §6.1.1: SM0 is the mailbox for incoming SDOs, SM1 the one for outgoing SDOs). The n-th Sm element is "
+        "SMn.",
+    .bad_example =
+        "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... "
+        "ControlByte=\"#x22\">MBoxIn</Sm>",
+    .good_example =
+        "<Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... ControlByte=\"#x22\">MBoxIn</Sm><Sm ...>Outputs</Sm><Sm "
+        "...>Inputs</Sm>",
+    .check = check_mailbox_position,
+};
 
 // ---- sm-overlap -----------------------------------------------------------------------------
 
@@ -193,6 +259,28 @@ void check_overlap(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule sm_overlap{
+    .id = "sm-overlap",
+    .default_severity = Severity::error,
+    .summary = "Two SyncManagers whose memory ranges overlap",
+    .rationale =
+        "Each SyncManager owns [StartAddress, StartAddress + size) of ESC memory, and a buffered process-data SM "
+        "(ControlByte bits 1:0 = 00) owns three consecutive buffers of that size (ESC datasheet '3-buffer mode'); the "
+        "master only writes the first address to the ESC. Overlapping ranges corrupt each other's data (SOES "
+        "soes/esc.c ESC_checkSM23 refuses the state change when SM2's three buffers reach into SM3). A process-data "
+        "SM's size is that of the PDOs assigned to it by default, since the master computes it from them, else "
+        "DefaultSize; a mailbox SM counts once (a buffered mailbox is sm-mailbox-mode's finding). SMs below 0x1000, "
+        "in the register area (Beckhoff terminals put 1-byte buffered SMs on the digital I/O bytes 0x0F00, 0x0F01), "
+        "count once as well.",
+    .bad_example =
+        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
+        "<Sm StartAddress=\"#x1140\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
+    .good_example =
+        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
+        "<Sm StartAddress=\"#x1200\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
+    .check = check_overlap,
+};
+
 // ---- sm-size-zero ---------------------------------------------------------------------------
 
 void check_size_zero(const EsiDocument& document, RuleContext& context) {
@@ -210,6 +298,21 @@ void check_size_zero(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule sm_size_zero{
+    .id = "sm-size-zero",
+    .default_severity = Severity::warning,
+    .summary = "Enabled SM with DefaultSize 0 and no default PDOs",
+    .rationale =
+        "An SM that is enabled but ends up with length 0 is rejected by the ESC or the slave firmware (AL status "
+        "0x001D/0x001E 'invalid output/input configuration'); masters that take the SII values as they are run into "
+        "it (ethercrab-rs/ethercrab #354: PS2001, EL6614, ELM3004; OpenEtherCATsociety/SOEM #246). When PDOs are "
+        "assigned to the SM by default the master computes the length from them, so the rule fires only when none "
+        "are. Write Enable=\"0\" for an SM that starts empty.",
+    .bad_example = "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"0\" Enable=\"1\">Outputs</Sm>",
+    .good_example = "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"0\" Enable=\"0\">Outputs</Sm>",
+    .check = check_size_zero,
+};
 
 // ---- sm-size-range --------------------------------------------------------------------------
 
@@ -232,6 +335,23 @@ void check_size_range(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule sm_size_range{
+    .id = "sm-size-range",
+    .default_severity = Severity::error,
+    .summary = "SM sizes outside MinSize <= DefaultSize <= MaxSize",
+    .rationale =
+        "MinSize and MaxSize bound the length a master may configure, and DefaultSize is what it uses without a "
+        "reason to change it (ETG.2000 Sm attributes). A default outside the bounds, or MinSize above MaxSize, leaves "
+        "no valid configuration; configuration tools clamp differently.",
+    .bad_example =
+        "<Sm MinSize=\"34\" MaxSize=\"128\" DefaultSize=\"256\" StartAddress=\"#x1000\" ControlByte=\"#x26\" "
+        "Enable=\"1\">MBoxOut</Sm>",
+    .good_example =
+        "<Sm MinSize=\"34\" MaxSize=\"256\" DefaultSize=\"256\" StartAddress=\"#x1000\" ControlByte=\"#x26\" "
+        "Enable=\"1\">MBoxOut</Sm>",
+    .check = check_size_range,
+};
 
 // ---- sm-mailbox-size ------------------------------------------------------------------------
 
@@ -257,6 +377,21 @@ void check_mailbox_size(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule sm_mailbox_size{
+    .id = "sm-mailbox-size",
+    .default_severity = Severity::warning,
+    .summary = "Mailbox SM without DefaultSize or too small",
+    .rationale =
+        "The standard mailbox offset and size in SII words 0x18-0x1B come from the MBoxOut/MBoxIn SMs' StartAddress "
+        "and DefaultSize (ETG.2010; CTT TF-1300 2-12), so a mailbox SM without DefaultSize yields a mailbox of 0 "
+        "bytes. A mailbox message is a 6-byte header plus data; an expedited CoE SDO needs 6 + 2 + 8 = 16 bytes "
+        "(ETG.1000.6 mailbox and SDO layout; STÖBER ECS 5000 manual §7.2 'Mailbox-Header 6 Byte, CoE-Header 2 Byte, "
+        "Expedited SDO-Message 8 Byte').",
+    .bad_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" Enable=\"1\">MBoxOut</Sm>",
+    .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
+    .check = check_mailbox_size,
+};
 
 // ---- sm-1c00-mismatch -----------------------------------------------------------------------
 
@@ -324,101 +459,38 @@ void check_1c00(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule sm_1c00_mismatch{
+    .id = "sm-1c00-mismatch",
+    .default_severity = Severity::error,
+    .summary = "0x1C00 communication types disagree with the Sm list",
+    .rationale =
+        "0x1C00 sub n gives the type of SM n-1: 1 mailbox receive, 2 mailbox send, 3 process data output, 4 process "
+        "data input, 0 unused (ETG.1000.6 object 0x1C00; the item C series and Afag SE-Power EtherCAT manuals "
+        "§6.1.2.2). Masters read it over SDO to decide which SM carries the PDO assignment 0x1C12/0x1C13; a copy that "
+        "disagrees with the Sm elements makes the master configure the wrong SM. Swapped SM2/SM3 types in "
+        "SSC-generated firmware kept devices out of OP (OpenEtherCATsociety/SOEM #401). Defaults are read from "
+        "DefaultValue or DefaultData.",
+    .bad_example =
+        "<Sm ...>Outputs</Sm> (SM2) ... 0x1C00 <SubItem><Name>SubIndex 003</Name><Info><DefaultValue>4</DefaultValue>",
+    .good_example =
+        "<Sm ...>Outputs</Sm> (SM2) ... 0x1C00 <SubItem><Name>SubIndex 003</Name><Info><DefaultValue>3</DefaultValue>",
+    .check = check_1c00,
+};
+
 }  // namespace
 
 void add_sm(std::vector<Rule>& out) {
-    out.push_back(Rule{
-        "sm-direction-mismatch", Severity::error, "SM text and ControlByte direction disagree",
-        "ControlByte bits 3:2 set the SyncManager direction (00: the master reads, 01: the master writes; ESC register "
-        "0x0804+8n, ETG.1000.4). MBoxOut and Outputs carry data from the master to the slave and need the write "
-        "direction (#x26, #x24, #x64); MBoxIn and Inputs need the read direction (#x22, #x20). A swapped direction "
-        "makes the ESC refuse the master's writes or the PDI's updates, and the device stays in PRE-OP with an SM "
-        "configuration error (SOES tutorial SM table; OpenEtherCATsociety/SOEM #247, where the maintainer lists the "
-        "canonical #x26/#x22/#x24/#x20 block; domain notes S5/S6).",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x20\" Enable=\"1\">Outputs</Sm>",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" Enable=\"1\">Outputs</Sm>", &check_direction});
-    out.push_back(Rule{
-        "sm-mailbox-mode", Severity::error, "A mailbox SM whose ControlByte selects buffered mode",
-        "MBoxOut and MBoxIn must run in mailbox (single-buffer, handshake) mode, ControlByte bits 1:0 = 10: #x26 for "
-        "the master's requests and #x22 for the slave's answers. In buffered (3-buffer) mode the ESC overwrites "
-        "unread messages and occupies three times the size (ESC register 0x0804+8n; SOES tutorial; "
-        "OpenEtherCATsociety/SOEM #247 lists the canonical #x26/#x22 pair; in the corpus 499 MBoxOut and 499 MBoxIn "
-        "SMs use exactly these, the only exceptions being a deliberately broken test file).",
-        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x24\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
-        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
-        &check_mailbox_mode});
-    out.push_back(Rule{
-        "sm-control-byte-reserved", Severity::error, "ControlByte with reserved bits or values",
-        "The SyncManager control register (0x0804+8n) reserves operation modes 01 and 11 (bits 1:0), directions 10 "
-        "and 11 (bits 3:2) and bit 7 (ETG.1000.4; Beckhoff ESC datasheet section II). A master copies the ControlByte "
-        "into the register as it is, so a reserved value gives undefined ESC behaviour. Values above #xFF do not fit "
-        "the register at all.",
-        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x33\" Enable=\"1\">MBoxOut</Sm>",
-        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" Enable=\"1\">MBoxOut</Sm>", &check_control_byte_reserved});
-    out.push_back(Rule{
-        "sm-mailbox-position", Severity::warning, "Mailbox SMs not at SM0 (out) and SM1 (in)",
-        "The standard mailbox uses SM0 for master -> slave (MBoxOut) and SM1 for slave -> master (MBoxIn): the SII "
-        "standard mailbox words 0x18-0x1B and 0x1C00:01/02 describe exactly these two, and masters such as SOEM "
-        "program SM0/SM1 as the mailbox from those words (SOES tutorial; servo manuals §6.1.1 R1 'SM0 = mailbox, incoming "
-        "SDOs, SM1 = mailbox, outgoing'). The n-th Sm element is SMn.",
-        "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... "
-        "ControlByte=\"#x22\">MBoxIn</Sm>",
-        "<Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... ControlByte=\"#x22\">MBoxIn</Sm><Sm ...>Outputs</Sm><Sm "
-        "...>Inputs</Sm>",
-        &check_mailbox_position});
-    out.push_back(Rule{
-        "sm-overlap", Severity::error, "Two SyncManagers whose memory ranges overlap",
-        "Each SyncManager owns [StartAddress, StartAddress + size) of ESC memory, and a buffered process-data SM "
-        "(ControlByte bits 1:0 = 00) owns three consecutive buffers of that size (ESC datasheet '3-buffer mode'); the "
-        "master only writes the first address to the ESC. Overlapping ranges corrupt each other's data (domain note "
-        "S7; the gen_od review computes SM addresses the same way). A process-data SM's size is that of the PDOs "
-        "assigned to it by default, since the master computes it from them, else DefaultSize; a mailbox SM counts "
-        "once (a buffered mailbox is sm-mailbox-mode's finding). SMs below 0x1000, in the register area (Beckhoff "
-        "terminals put 1-byte buffered SMs on the digital I/O bytes 0x0F00, 0x0F01), count once as well.",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
-        "<Sm StartAddress=\"#x1140\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
-        "<Sm StartAddress=\"#x1200\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
-        &check_overlap});
-    out.push_back(Rule{
-        "sm-size-zero", Severity::warning, "Enabled SM with DefaultSize 0 and no default PDOs",
-        "An SM that is enabled but ends up with length 0 is rejected by the ESC or the slave firmware (AL status "
-        "0x001D/0x001E 'invalid output/input configuration'); masters that take the SII values as they are run into "
-        "it (ethercrab-rs/ethercrab #354: PS2001, EL6614, ELM3004; OpenEtherCATsociety/SOEM #246). When PDOs are "
-        "assigned to the SM by default the master computes the length from them, so the rule fires only when none "
-        "are. Write Enable=\"0\" for an SM that starts empty.",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"0\" Enable=\"1\">Outputs</Sm>",
-        "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"0\" Enable=\"0\">Outputs</Sm>", &check_size_zero});
-    out.push_back(Rule{
-        "sm-size-range", Severity::error, "SM sizes outside MinSize <= DefaultSize <= MaxSize",
-        "MinSize and MaxSize bound the length a master may configure, and DefaultSize is what it uses without a "
-        "reason to change it (ETG.2000 Sm attributes). A default outside the bounds, or MinSize above MaxSize, leaves "
-        "no valid configuration; configuration tools clamp differently.",
-        "<Sm MinSize=\"34\" MaxSize=\"128\" DefaultSize=\"256\" StartAddress=\"#x1000\" ControlByte=\"#x26\" "
-        "Enable=\"1\">MBoxOut</Sm>",
-        "<Sm MinSize=\"34\" MaxSize=\"256\" DefaultSize=\"256\" StartAddress=\"#x1000\" ControlByte=\"#x26\" "
-        "Enable=\"1\">MBoxOut</Sm>",
-        &check_size_range});
-    out.push_back(Rule{
-        "sm-mailbox-size", Severity::warning, "Mailbox SM without DefaultSize or too small",
-        "The standard mailbox offset and size in SII words 0x18-0x1B come from the MBoxOut/MBoxIn SMs' StartAddress "
-        "and DefaultSize (ETG.2010; CTT TF-1300 2-12), so a mailbox SM without DefaultSize yields a mailbox of 0 "
-        "bytes. A mailbox message is a 6-byte header plus data; an expedited CoE SDO needs 6 + 2 + 8 = 16 bytes "
-        "(ETG.1000.6 mailbox and SDO layout; STÖBER ECS 5000 manual §7.2 'Mailbox-Header 6 Byte, CoE-Header 2 Byte, "
-        "Expedited SDO-Message 8 Byte').",
-        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" Enable=\"1\">MBoxOut</Sm>",
-        "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
-        &check_mailbox_size});
-    out.push_back(Rule{
-        "sm-1c00-mismatch", Severity::error, "0x1C00 communication types disagree with the Sm list",
-        "0x1C00 sub n gives the type of SM n-1: 1 mailbox receive, 2 mailbox send, 3 process data output, 4 process "
-        "data input, 0 unused (ETG.1000.6 object 0x1C00; servo manuals §6.1.2.2 R2). Masters read it over SDO to "
-        "decide which SM carries the PDO assignment 0x1C12/0x1C13; a copy that disagrees with the Sm elements "
-        "makes the master configure the wrong SM. Swapped SM2/SM3 types in SSC-generated firmware kept devices out "
-        "of OP (OpenEtherCATsociety/SOEM #401). Defaults are read from DefaultValue or DefaultData.",
-        "<Sm ...>Outputs</Sm> (SM2) ... 0x1C00 <SubItem><Name>SubIndex 003</Name><Info><DefaultValue>4</DefaultValue>",
-        "<Sm ...>Outputs</Sm> (SM2) ... 0x1C00 <SubItem><Name>SubIndex 003</Name><Info><DefaultValue>3</DefaultValue>",
-        &check_1c00});
+    out.insert(out.end(), {
+        sm_direction_mismatch,
+        sm_mailbox_mode,
+        sm_control_byte_reserved,
+        sm_mailbox_position,
+        sm_overlap,
+        sm_size_zero,
+        sm_size_range,
+        sm_mailbox_size,
+        sm_1c00_mismatch,
+    });
 }
 
 }  // namespace esi::rules

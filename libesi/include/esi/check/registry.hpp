@@ -1,6 +1,7 @@
 #pragma once
-// The rule catalogue. Rules are grouped by area, one source file per area under
-// libesi/src/check/; each area adds its rules in a function the registry calls.
+// The rule catalogue. Each rule is defined next to its check in a rules file under
+// libesi/src/check/ (rules_<area>[_<topic>].cpp); libesi/src/check/areas.hpp says how a rule is
+// added and registered.
 
 #include <span>
 #include <string_view>

@@ -20,6 +20,9 @@ class RuleCache;  // indexes of the document's Dictionaries shared by the rules 
 
 using CheckFunction = void (*)(const EsiDocument& document, RuleContext& context);
 
+// Defined with designated initialisers right below its check function, e.g.
+//   constexpr Rule sm_overlap{.id = "sm-overlap", .default_severity = Severity::error, …,
+//                             .check = check_overlap};
 struct Rule {
     std::string_view id;  // kebab-case, prefixed by area: sm-…, pdo-…, od-…
     Severity default_severity = Severity::warning;

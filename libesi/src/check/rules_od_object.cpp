@@ -1,10 +1,10 @@
-// od-… checks on the objects of a Dictionary: presence of the mandatory objects, duplicates,
-// flag values, and default/minimum/maximum values against the entry they belong to.
+// Rules of the od area on the objects of a Dictionary: presence of the mandatory objects,
+// duplicates, flag values, and default/minimum/maximum values against the entry they belong to.
 #include <initializer_list>
 #include <string>
 #include <unordered_map>
 
-#include "check/od_checks.hpp"
+#include "check/areas.hpp"
 #include "check/od_scope.hpp"
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
@@ -12,7 +12,7 @@
 #include "check/rule_cache.hpp"
 #include "esi/model/object_layout.hpp"
 
-namespace esi::rules::od {
+namespace esi::rules {
 
 namespace {
 
@@ -182,7 +182,7 @@ void for_each_valued_entry(const EsiDocument& document, RuleContext& context, F&
     }
 }
 
-}  // namespace
+// ---- od-mandatory-object --------------------------------------------------------------------
 
 void check_mandatory_object(const EsiDocument& document, RuleContext& context) {
     for (const auto& info : document.infos)
@@ -201,6 +201,22 @@ void check_mandatory_object(const EsiDocument& document, RuleContext& context) {
         }
 }
 
+constexpr Rule od_mandatory_object{
+    .id = "od-mandatory-object",
+    .default_severity = Severity::error,
+    .summary = "A CoE device's Dictionary lacks object 0x1000 or 0x1018",
+    .rationale =
+        "Every CoE device has Device type (0x1000) and Identity (0x1018) (ETG.1000.6; CiA 301); the conformance test "
+        "tool reads both (CTT TF-2301) and masters compare 0x1018 with the ESI identity. When the ESI describes the "
+        "Dictionary, it must describe these objects too (SOES tutorial; kubabuda/EEPROM_generator adds both to every "
+        "dictionary it generates). Devices whose ESI has no Dictionary are not checked.",
+    .bad_example = "<Mailbox><CoE/></Mailbox> and a Dictionary with objects but no #x1018",
+    .good_example = "<Mailbox><CoE/></Mailbox> and a Dictionary with #x1000 and #x1018",
+    .check = check_mandatory_object,
+};
+
+// ---- od-duplicate-object --------------------------------------------------------------------
+
 void check_duplicate_object(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         std::unordered_map<std::uint32_t, const Object*> seen;
@@ -213,6 +229,21 @@ void check_duplicate_object(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule od_duplicate_object{
+    .id = "od-duplicate-object",
+    .default_severity = Severity::error,
+    .summary = "Two Objects of one Dictionary share an index",
+    .rationale =
+        "An index addresses one object (ETG.1000.6 object dictionary). With two declarations a master shows one and "
+        "the other is unreachable; slave tables generated from the ESI have two entries for one index and SDO lookups "
+        "such as SDO_findobject in SOES soes/esc_coe.c (a binary search over the sorted list) pick either.",
+    .bad_example = "<Object><Index>#x2000</Index>…</Object><Object><Index>#x2000</Index>…</Object>",
+    .good_example = "<Object><Index>#x2000</Index>…</Object><Object><Index>#x2001</Index>…</Object>",
+    .check = check_duplicate_object,
+};
+
+// ---- od-flags-value -------------------------------------------------------------------------
 
 void check_flags_value(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
@@ -228,12 +259,45 @@ void check_flags_value(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule od_flags_value{
+    .id = "od-flags-value",
+    .default_severity = Severity::error,
+    .summary = "An Access, PdoMapping or Category value the schema does not allow",
+    .rationale =
+        "Flags/Access is ro, rw or wo; Flags/PdoMapping is R, T, RT or TR (lower case for optional mapping); "
+        "Flags/Category is m, o or c (ETG.2000 EtherCATBase.xsd ObjectType/Flags). Other spellings (RW, R/W, rx) are "
+        "read as 'no access' or 'not mappable' by tools that follow the schema.",
+    .bad_example = "<Flags><Access>RW</Access><PdoMapping>rx</PdoMapping></Flags>",
+    .good_example = "<Flags><Access>rw</Access><PdoMapping>R</PdoMapping></Flags>",
+    .check = check_flags_value,
+};
+
+// ---- od-default-length ----------------------------------------------------------------------
+
 void check_default_length(const EsiDocument& document, RuleContext& context) {
     for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
                                                  const BasicType* basic, std::uint64_t bits, SourcePos pos) {
         check_lengths(context, values, name, type_name, basic, bits, pos);
     });
 }
+
+constexpr Rule od_default_length{
+    .id = "od-default-length",
+    .default_severity = Severity::warning,
+    .summary = "DefaultData/MinData/MaxData whose length differs from the entry's size",
+    .rationale =
+        "DefaultData, MinData and MaxData are the value's bytes as an SDO transfers them (ETG.2000 ObjectInfoType), "
+        "so they have exactly the entry's size in bytes; strings and byte arrays may be shorter than their maximum. A "
+        "longer or shorter value is truncated or padded differently by each tool (KickCAT 'data default size "
+        "mismatch'; kubabuda/EEPROM_generator #2 on string lengths). DefaultString must fit STRING(n).",
+    .bad_example =
+        "<Object><Index>#x1018</Index>… <SubItem><Name>Vendor ID</Name><Info><DefaultData>E40A</DefaultData>…",
+    .good_example =
+        "<Object><Index>#x1018</Index>… <SubItem><Name>Vendor ID</Name><Info><DefaultData>E40A0000</DefaultData>…",
+    .check = check_default_length,
+};
+
+// ---- od-default-range -----------------------------------------------------------------------
 
 void check_default_range(const EsiDocument& document, RuleContext& context) {
     for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
@@ -242,4 +306,31 @@ void check_default_range(const EsiDocument& document, RuleContext& context) {
     });
 }
 
-}  // namespace esi::rules::od
+constexpr Rule od_default_range{
+    .id = "od-default-range",
+    .default_severity = Severity::warning,
+    .summary = "A default value outside MinValue/MaxValue or outside its type",
+    .rationale =
+        "A device starts with its default; a default that its own limits forbid (or that does not fit the type, such as "
+        "300 for a USINT) is either rejected by the firmware's range check at the first SDO write-back or silently "
+        "truncated. MinValue above MaxValue is reported too. Limits of signed objects written as bit patterns "
+        "(#xfff80001 for a DINT) are read as two's complement (ETG.2000 ObjectInfoType; SSC Default/Min/Max columns, "
+        "ET9300 §13).",
+    .bad_example = "<Type>USINT</Type>… <Info><DefaultValue>300</DefaultValue></Info>",
+    .good_example = "<Type>USINT</Type>… <Info><DefaultValue>30</DefaultValue></Info>",
+    .check = check_default_range,
+};
+
+}  // namespace
+
+void add_od_object(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        od_mandatory_object,
+        od_duplicate_object,
+        od_flags_value,
+        od_default_length,
+        od_default_range,
+    });
+}
+
+}  // namespace esi::rules

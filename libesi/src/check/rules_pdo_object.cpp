@@ -1,16 +1,16 @@
-// pdo-… checks of PDO entries against the objects they map (S17 of the domain notes): the object
-// and sub-index exist, BitLen and DataType (including signedness) agree with the object, and the
-// object may be mapped in that direction.
+// Rules of the pdo area that check PDO entries against the objects they map: the object and
+// sub-index exist, BitLen and DataType (including signedness) agree with the object, and the object
+// may be mapped in that direction.
 #include <algorithm>
 
+#include "check/areas.hpp"
 #include "check/od_text.hpp"
-#include "check/pdo_checks.hpp"
 #include "check/pdo_entry_type.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
 #include "check/rule_cache.hpp"
 
-namespace esi::rules::pdo {
+namespace esi::rules {
 
 namespace {
 
@@ -88,7 +88,7 @@ std::string target_label(const Object& object, const ObjectEntry& target) {
     return out;
 }
 
-}  // namespace
+// ---- pdo-entry-object-missing ---------------------------------------------------------------
 
 void check_entry_object_missing(const EsiDocument& document, RuleContext& context) {
     for_each_mapped_entry(document, context, true, [&](const MappedEntry& m) {
@@ -113,6 +113,26 @@ void check_entry_object_missing(const EsiDocument& document, RuleContext& contex
     });
 }
 
+constexpr Rule pdo_entry_object_missing{
+    .id = "pdo-entry-object-missing",
+    .default_severity = Severity::warning,
+    .summary = "A PDO entry maps an object or sub-index the Dictionary does not contain",
+    .rationale =
+        "A PDO entry maps Dictionary object Index:SubIndex. When the device ships its Dictionary in the ESI, a mapped "
+        "object that is not in it cannot be configured over SDO: the device answers abort 0x06020000 'object does not "
+        "exist' (OpenEtherCATsociety/SOEM #402) or 0x06040041 'cannot be mapped' (STÖBER ECS 5000 EtherCAT manual "
+        "§7.2.3). Checked only for devices whose own Dictionary lists objects; modules, modular devices and "
+        "slot-dependent indices (DependOnSlot) take objects from elsewhere, oversampling PDOs shift their indices, "
+        "and objects that ETG profiles define (0x10F0-0x10FF, TxPDO parameters 0x1800-0x19FF, the modular device area "
+        "0xF000-0xFFFF) are known to masters without the ESI (ETG.1000.6 communication area; ETG.5001 modular device "
+        "profile).",
+    .bad_example = "<Entry><Index>#x6064</Index>…</Entry> with no Object #x6064",
+    .good_example = "<Object><Index>#x6064</Index>…</Object> … <Entry><Index>#x6064</Index>…</Entry>",
+    .check = check_entry_object_missing,
+};
+
+// ---- pdo-entry-object-type ------------------------------------------------------------------
+
 void check_entry_object_type(const EsiDocument& document, RuleContext& context) {
     for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
         const DictionaryIndex& dictionary = m.dictionary;
@@ -135,6 +155,26 @@ void check_entry_object_type(const EsiDocument& document, RuleContext& context) 
     });
 }
 
+constexpr Rule pdo_entry_object_type{
+    .id = "pdo-entry-object-type",
+    .default_severity = Severity::error,
+    .summary = "A PDO entry's DataType differs in kind (signedness) from the object it maps",
+    .rationale =
+        "The entry's DataType is what the master uses to interpret the bits; the object's type is what the firmware "
+        "puts there. A signed object described as UDINT reads -1 as 4294967295, and a REAL described as DINT is "
+        "garbage. Generators that choose the DataType by bit width alone produce exactly this, and the device still "
+        "reaches OP, since no state transition checks the DataType (leducp/KickCAT test "
+        "mapping_target_subindex_reconciled_against_object reconciles an entry with its object). Types of the same "
+        "kind and width (UINT/WORD, BOOL/BIT1) are accepted.",
+    .bad_example =
+        "<Object><Index>#x6064</Index><Type>DINT</Type>… <Entry><Index>#x6064</Index><BitLen>32</BitLen><DataType>UDINT</DataType>",
+    .good_example =
+        "<Object><Index>#x6064</Index><Type>DINT</Type>… <Entry><Index>#x6064</Index><BitLen>32</BitLen><DataType>DINT</DataType>",
+    .check = check_entry_object_type,
+};
+
+// ---- pdo-entry-object-bitlen ----------------------------------------------------------------
+
 void check_entry_object_bitlen(const EsiDocument& document, RuleContext& context) {
     for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
         const DictionaryIndex& dictionary = m.dictionary;
@@ -152,6 +192,24 @@ void check_entry_object_bitlen(const EsiDocument& document, RuleContext& context
                        {context.note(object->pos, "the object is declared here")});
     });
 }
+
+constexpr Rule pdo_entry_object_bitlen{
+    .id = "pdo-entry-object-bitlen",
+    .default_severity = Severity::error,
+    .summary = "A PDO entry's BitLen differs from the size of the object it maps",
+    .rationale =
+        "The device fills the process image with the object's own size; an ESI entry with another BitLen makes the "
+        "master read a different layout than the slave writes (STÖBER ECS 5000 EtherCAT manual §7.1.1: the device "
+        "reports the mapped length; SDO abort 0x06040042 'length exceeds PDO'). Reported only when BitLen agrees with "
+        "the entry's own DataType (otherwise pdo-entry-bitlen-type reports it).",
+    .bad_example =
+        "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize>… <Entry><Index>#x6041</Index><BitLen>8</BitLen>",
+    .good_example =
+        "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize>… <Entry><Index>#x6041</Index><BitLen>16</BitLen>",
+    .check = check_entry_object_bitlen,
+};
+
+// ---- pdo-entry-not-mappable -----------------------------------------------------------------
 
 void check_entry_not_mappable(const EsiDocument& document, RuleContext& context) {
     for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
@@ -181,4 +239,32 @@ void check_entry_not_mappable(const EsiDocument& document, RuleContext& context)
     });
 }
 
-}  // namespace esi::rules::pdo
+constexpr Rule pdo_entry_not_mappable{
+    .id = "pdo-entry-not-mappable",
+    .default_severity = Severity::warning,
+    .summary = "A PDO entry maps an object whose PdoMapping flag forbids that direction",
+    .rationale =
+        "Objects declare whether they may be mapped into RxPDOs (R), TxPDOs (T) or both (Flags/PdoMapping, ETG.2000 "
+        "ObjectType; lower case marks optional mapping). A device rejects a mapping of any other object with SDO "
+        "abort 0x06040041 'object cannot be mapped into the PDO' (STÖBER ECS 5000 EtherCAT manual §7.1.1, §7.2.3: "
+        "only parameters marked 'PDO' can be mapped); the SSC spreadsheet's rx/tx column has the same meaning (ET9300 "
+        "§13). Objects without any PdoMapping flag are not reported: many generators omit the flag altogether.",
+    .bad_example =
+        "<Object><Index>#x6041</Index>…<Flags><PdoMapping>T</PdoMapping></Flags></Object> mapped into an RxPdo",
+    .good_example =
+        "<Object><Index>#x6040</Index>…<Flags><PdoMapping>R</PdoMapping></Flags></Object> mapped into an RxPdo",
+    .check = check_entry_not_mappable,
+};
+
+}  // namespace
+
+void add_pdo_object(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        pdo_entry_object_missing,
+        pdo_entry_object_type,
+        pdo_entry_object_bitlen,
+        pdo_entry_not_mappable,
+    });
+}
+
+}  // namespace esi::rules

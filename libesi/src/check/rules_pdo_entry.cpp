@@ -1,15 +1,15 @@
-// pdo-… checks on PDO entries by themselves: the DataType name, BitLen against the DataType,
-// padding entries and byte alignment.
+// Rules of the pdo area on PDO entries by themselves: the DataType name, BitLen against the
+// DataType, padding entries and byte alignment.
 #include <vector>
 
+#include "check/areas.hpp"
 #include "check/od_text.hpp"
-#include "check/pdo_checks.hpp"
 #include "check/pdo_entry_type.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/rule_cache.hpp"
 #include "esi/text_distance.hpp"
 
-namespace esi::rules::pdo {
+namespace esi::rules {
 
 namespace {
 
@@ -40,7 +40,7 @@ std::vector<std::string_view> basic_type_names() {
     return names;
 }
 
-}  // namespace
+// ---- pdo-entry-type-unknown -----------------------------------------------------------------
 
 void check_entry_type_unknown(const EsiDocument& document, RuleContext& context) {
     static const std::vector<std::string_view> names = basic_type_names();
@@ -70,6 +70,22 @@ void check_entry_type_unknown(const EsiDocument& document, RuleContext& context)
     });
 }
 
+constexpr Rule pdo_entry_type_unknown{
+    .id = "pdo-entry-type-unknown",
+    .default_severity = Severity::error,
+    .summary = "A PDO entry's DataType is not an ESI type name",
+    .rationale =
+        "Masters type process variables from the entry's DataType. A name that is neither a basic ESI type (ETG.2000, "
+        "ET9300 Table 22: BOOL, USINT, UINT, UDINT, …) nor defined in the Dictionary cannot be typed; generators such "
+        "as pollen-robotics/pyesi write C-style names (UINT8, UINT16) that TwinCAT does not know. The message names "
+        "the standard spelling when there is one.",
+    .bad_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT16</DataType></Entry>",
+    .good_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT</DataType></Entry>",
+    .check = check_entry_type_unknown,
+};
+
+// ---- pdo-entry-bitlen-type ------------------------------------------------------------------
+
 void check_entry_bitlen_type(const EsiDocument& document, RuleContext& context) {
     for_each_typed_entry(document, context, [&](const PdoScope&, EntryTypes& types, const PdoEntry& entry) {
         // BitLen 0 is a missing or unreadable BitLen (the reader reports it) or an empty slot.
@@ -81,6 +97,22 @@ void check_entry_bitlen_type(const EsiDocument& document, RuleContext& context) 
     });
 }
 
+constexpr Rule pdo_entry_bitlen_type{
+    .id = "pdo-entry-bitlen-type",
+    .default_severity = Severity::error,
+    .summary = "A PDO entry's BitLen disagrees with its DataType",
+    .rationale =
+        "BitLen is the width the entry occupies in the process image and DataType says how to read it; UINT is 16 "
+        "bits, DINT 32, BITn n (ET9300 Table 22; ETG.1000.6 data types). A mismatch shifts every later variable in "
+        "the image or truncates the value. The manuals of the item C series and Afag SE-Power servo controllers state "
+        "it outright: BitLen 'muss immer dem Typ … entsprechen' (Tabelle 14). Padding entries (Index 0) are exempt.",
+    .bad_example = "<Entry><Index>#x6064</Index><BitLen>16</BitLen><DataType>DINT</DataType></Entry>",
+    .good_example = "<Entry><Index>#x6064</Index><BitLen>32</BitLen><DataType>DINT</DataType></Entry>",
+    .check = check_entry_bitlen_type,
+};
+
+// ---- pdo-padding-subindex -------------------------------------------------------------------
+
 void check_padding_subindex(const EsiDocument& document, RuleContext& context) {
     for_each_entry(document, [&](const PdoScope&, const Pdo&, const PdoEntry& entry) {
         if (!entry.is_padding() || entry.effective_subindex() == 0) return;
@@ -88,6 +120,22 @@ void check_padding_subindex(const EsiDocument& document, RuleContext& context) {
                                       "; a gap in a PDO is mapped as #x0000:00 with only its BitLen");
     });
 }
+
+constexpr Rule pdo_padding_subindex{
+    .id = "pdo-padding-subindex",
+    .default_severity = Severity::warning,
+    .summary = "A padding entry (Index 0) with a SubIndex other than 0",
+    .rationale =
+        "Gaps in a PDO are mapped as Index 0, SubIndex 0 with the gap's BitLen (OpenEtherCATsociety/SOEM #297: "
+        "fillers are 0x0000:00; SSC pad_x entries). A non-zero SubIndex turns the filler into the mapping entry "
+        "0x0000:nn, which some slave stacks reject when the mapping is downloaded. Padding needs neither a DataType "
+        "nor a Name.",
+    .bad_example = "<Entry><Index>#x0</Index><SubIndex>1</SubIndex><BitLen>7</BitLen></Entry>",
+    .good_example = "<Entry><Index>#x0</Index><BitLen>7</BitLen></Entry>",
+    .check = check_padding_subindex,
+};
+
+// ---- pdo-entry-alignment --------------------------------------------------------------------
 
 void check_entry_alignment(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
@@ -108,4 +156,33 @@ void check_entry_alignment(const EsiDocument& document, RuleContext& context) {
     }
 }
 
-}  // namespace esi::rules::pdo
+constexpr Rule pdo_entry_alignment{
+    .id = "pdo-entry-alignment",
+    .default_severity = Severity::warning,
+    .summary = "An entry of 8 bits or more does not start on a byte boundary",
+    .rationale =
+        "Values of a byte or more should start on a byte boundary of the PDO; many slave stacks copy process data "
+        "byte-wise and masters map variables to byte offsets, so a 16-bit value at bit 3 is either rejected or read "
+        "shifted. The SSC inserts padding for this reason ('append padding byte … (basic process data has odd word "
+        "length)', SSC cia402appl.h). Only the first misaligned entry of a PDO is reported, as the others follow from "
+        "it.",
+    .bad_example =
+        "<Entry><Index>#x6000</Index><SubIndex>1</SubIndex><BitLen>1</BitLen>…</Entry><Entry><Index>#x6001</Index><BitLen>16</BitLen>…",
+    .good_example =
+        "<Entry><Index>#x6000</Index><SubIndex>1</SubIndex><BitLen>1</BitLen>…</Entry><Entry><Index>#x0</Index><BitLen>7</BitLen></Entry>"
+        "<Entry><Index>#x6001</Index><BitLen>16</BitLen>…",
+    .check = check_entry_alignment,
+};
+
+}  // namespace
+
+void add_pdo_entry(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        pdo_entry_type_unknown,
+        pdo_entry_bitlen_type,
+        pdo_padding_subindex,
+        pdo_entry_alignment,
+    });
+}
+
+}  // namespace esi::rules

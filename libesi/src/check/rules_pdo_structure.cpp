@@ -1,15 +1,16 @@
-// pdo-… checks on the PDO list of a device or module: index ranges, SyncManager references,
-// duplicates, Exclude references and the 8-bit limits of the CoE mapping and assignment objects.
+// Rules of the pdo area on the PDO list of a device or module: index ranges, SyncManager
+// references, duplicates, Exclude references and the 8-bit limits of the CoE mapping and assignment
+// objects.
 #include <map>
 #include <unordered_set>
 
+#include "check/areas.hpp"
 #include "check/od_text.hpp"
-#include "check/pdo_checks.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
 #include "esi/model/limits.hpp"
 
-namespace esi::rules::pdo {
+namespace esi::rules {
 
 namespace {
 
@@ -32,7 +33,7 @@ std::string sm_list(const Device& device) {
     return "declares SM0-SM" + std::to_string(device.sms.size() - 1);
 }
 
-}  // namespace
+// ---- pdo-index-range ------------------------------------------------------------------------
 
 void check_index_range(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
@@ -54,6 +55,25 @@ void check_index_range(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule pdo_index_range{
+    .id = "pdo-index-range",
+    .default_severity = Severity::error,
+    .summary = "RxPdo index outside 0x1600-0x17FF or TxPdo index outside 0x1A00-0x1BFF",
+    .rationale =
+        "The PDO index is the index of its mapping object, and ETG.1000.6 reserves 0x1600-0x17FF for RxPDO mapping "
+        "and 0x1A00-0x1BFF for TxPDO mapping. A master that uploads or downloads the mapping (PdoAssign/PdoConfig) "
+        "addresses exactly that object, and the SOES tutorial and the item C series and Afag SE-Power EtherCAT "
+        "manuals (§6.1.1, Tabelle 5: RxPDOs 0x1600-0x1603, TxPDOs 0x1A00-0x1A03) rely on the split. An index in the "
+        "other range usually means the PDO was declared with the wrong element. Only devices with CoE are checked: "
+        "without CoE there are no mapping objects and the index only names the PDO in the SII (SoE drives number "
+        "their MDT/AT by IDN).",
+    .bad_example = "<TxPdo Sm=\"3\"><Index>#x1600</Index><Name>Inputs</Name>…</TxPdo>",
+    .good_example = "<TxPdo Sm=\"3\"><Index>#x1A00</Index><Name>Inputs</Name>…</TxPdo>",
+    .check = check_index_range,
+};
+
+// ---- pdo-sm-unknown -------------------------------------------------------------------------
+
 void check_sm_unknown(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
         if (!scope.device) continue;  // a module's Sm refers to the SMs of the device it is plugged into
@@ -65,6 +85,21 @@ void check_sm_unknown(const EsiDocument& document, RuleContext& context) {
         });
     }
 }
+
+constexpr Rule pdo_sm_unknown{
+    .id = "pdo-sm-unknown",
+    .default_severity = Severity::error,
+    .summary = "A PDO is assigned (Sm=) to a SyncManager the device does not declare",
+    .rationale =
+        "Sm=\"n\" assigns the PDO by default to SyncManager n of the device's Sm list (ETG.2000 PdoType@Sm). When SM "
+        "n does not exist the master has nowhere to put the process data: the SII PDO category points at a missing SM "
+        "and TwinCAT refuses the configuration (ETG.2010 PDO category 'SyncM').",
+    .bad_example = "<Sm …>MBoxOut</Sm><Sm …>MBoxIn</Sm><Sm …>Outputs</Sm><RxPdo Sm=\"4\">…",
+    .good_example = "<Sm …>MBoxOut</Sm><Sm …>MBoxIn</Sm><Sm …>Outputs</Sm><RxPdo Sm=\"2\">…",
+    .check = check_sm_unknown,
+};
+
+// ---- pdo-sm-direction -----------------------------------------------------------------------
 
 void check_sm_direction(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
@@ -95,6 +130,24 @@ void check_sm_direction(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule pdo_sm_direction{
+    .id = "pdo-sm-direction",
+    .default_severity = Severity::error,
+    .summary = "An RxPdo on an input SM or a TxPdo on an output SM",
+    .rationale =
+        "RxPDOs carry outputs (master to slave) and must sit in an Outputs SyncManager (ControlByte direction "
+        "'write', usually SM2, #x24/#x64); TxPDOs carry inputs and belong to an Inputs SM (usually SM3, #x20). The "
+        "item C series and Afag SE-Power EtherCAT manuals fix SM2 for RxPDOs and SM3 for TxPDOs (§6.1.1, Tabelle 13), "
+        "and their §6.7.3 says a TxPDO is configured like the RxPDO apart from its Name, which, taken literally, "
+        "keeps Sm=\"2\". Process data on the wrong SM are never exchanged (SOES tutorial SM table; "
+        "OpenEtherCATsociety/SOEM #247).",
+    .bad_example = "<TxPdo Sm=\"2\"><Index>#x1A00</Index>…",
+    .good_example = "<TxPdo Sm=\"3\"><Index>#x1A00</Index>…",
+    .check = check_sm_direction,
+};
+
+// ---- pdo-duplicate-index --------------------------------------------------------------------
+
 void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
         std::map<std::uint32_t, const Pdo*> seen;
@@ -112,6 +165,21 @@ void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule pdo_duplicate_index{
+    .id = "pdo-duplicate-index",
+    .default_severity = Severity::error,
+    .summary = "Two PDOs of one device or module share an index",
+    .rationale =
+        "A PDO index names one mapping object; two PDOs with the same index cannot both be assigned, and a master keeps "
+        "only one of them (KickCAT warns on duplicate PDO indices; ETG.1000.6 one object per index). RxPdo and TxPdo "
+        "share the index space.",
+    .bad_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1600</Index>…</RxPdo>",
+    .good_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1601</Index>…</RxPdo>",
+    .check = check_duplicate_index,
+};
+
+// ---- pdo-exclude-unknown --------------------------------------------------------------------
+
 void check_exclude_unknown(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
         // Drives list every other PDO as excluded (Beckhoff AX2xxx): look indices up in a set.
@@ -127,6 +195,22 @@ void check_exclude_unknown(const EsiDocument& document, RuleContext& context) {
         });
     }
 }
+
+constexpr Rule pdo_exclude_unknown{
+    .id = "pdo-exclude-unknown",
+    .default_severity = Severity::warning,
+    .summary = "Exclude names a PDO that does not exist",
+    .rationale =
+        "Exclude lists the PDOs that cannot be assigned together with this one (ETG.2000 PdoType/Exclude); configuration "
+        "tools grey them out. An Exclude that names no PDO of the device is a typo or a leftover from a removed PDO, and "
+        "the exclusion it was meant to express is lost. Slot-dependent excludes (DependOnSlot) are not checked.",
+    .bad_example = "<RxPdo><Index>#x1600</Index><Exclude>#x1610</Exclude>…</RxPdo> (no PDO #x1610)",
+    .good_example =
+        "<RxPdo><Index>#x1600</Index><Exclude>#x1601</Exclude>…</RxPdo><RxPdo><Index>#x1601</Index>…</RxPdo>",
+    .check = check_exclude_unknown,
+};
+
+// ---- pdo-mapping-limits ---------------------------------------------------------------------
 
 void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
     // ETG.1000.6: a mapping object (0x16xx/0x1Axx) and an assignment object (0x1C1x) count their
@@ -164,4 +248,32 @@ void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
     }
 }
 
-}  // namespace esi::rules::pdo
+constexpr Rule pdo_mapping_limits{
+    .id = "pdo-mapping-limits",
+    .default_severity = Severity::error,
+    .summary = "More than 255 entries in a PDO, BitLen 0 or above 255, or more than 255 PDOs",
+    .rationale =
+        "The CoE mapping objects count their entries in the 8-bit sub-index 0 and store each entry's length in 8 "
+        "bits; the assignment objects 0x1C1x likewise list at most 255 PDOs (ETG.1000.6 PDO mapping/assignment; the "
+        "SII PDO category of ETG.2010 has one-byte counts too). leducp/KickCAT rejects such files ('>255 entries', "
+        "'BitLen > 255'). A BitLen of 0 on an object maps nothing; padding entries with BitLen 0 (a zero-width gap, "
+        "as in Beckhoff BKxxxxModules.xml in DiamondLightSource/ethercat etc/xml/) are harmless and not reported.",
+    .bad_example = "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>512</BitLen>…</Entry>",
+    .good_example = "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>32</BitLen>…</Entry>",
+    .check = check_mapping_limits,
+};
+
+}  // namespace
+
+void add_pdo_structure(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        pdo_index_range,
+        pdo_sm_unknown,
+        pdo_sm_direction,
+        pdo_duplicate_index,
+        pdo_exclude_unknown,
+        pdo_mapping_limits,
+    });
+}
+
+}  // namespace esi::rules

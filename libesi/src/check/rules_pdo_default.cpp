@@ -1,21 +1,22 @@
-// pdo-… checks of the PDO description against the defaults the Dictionary gives the CoE objects
-// that describe the same thing over SDO: the SM PDO assignment objects 0x1C10-0x1C2F (0x1C12 for
-// SM2, 0x1C13 for SM3) and the mapping objects 0x1600-0x17FF / 0x1A00-0x1BFF (ETG.1000.6 CoE
-// communication area). A master that reads the objects (PdoUpload) and one that reads the ESI
-// must end up with the same process image; SOEM #402 shows what a swapped 0x1C12 does.
+// Rules of the pdo area that compare the PDO description against the defaults the Dictionary
+// gives the CoE objects that describe the same thing over SDO: the SM PDO assignment objects
+// 0x1C10-0x1C2F (0x1C12 for SM2, 0x1C13 for SM3) and the mapping objects 0x1600-0x17FF /
+// 0x1A00-0x1BFF (ETG.1000.6 CoE communication area). A master that reads the objects (PdoUpload)
+// and one that reads the ESI must end up with the same process image; SOEM #402 shows what a
+// swapped 0x1C12 does.
 #include <algorithm>
 #include <array>
 #include <optional>
 #include <vector>
 
+#include "check/areas.hpp"
 #include "check/od_text.hpp"
 #include "check/od_values.hpp"
-#include "check/pdo_checks.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
 #include "check/rule_cache.hpp"
 
-namespace esi::rules::pdo {
+namespace esi::rules {
 
 namespace {
 
@@ -82,7 +83,7 @@ std::string mapping_text(std::uint64_t value) {
     return entry_address(index, subindex) + " (" + bits_text(value & 0xFF) + ")";
 }
 
-}  // namespace
+// ---- pdo-assign-default ---------------------------------------------------------------------
 
 void check_assign_default(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
@@ -113,6 +114,25 @@ void check_assign_default(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule pdo_assign_default{
+    .id = "pdo-assign-default",
+    .default_severity = Severity::warning,
+    .summary = "The default of 0x1C12/0x1C13 differs from the PDOs assigned by Sm=",
+    .rationale =
+        "PDOs with Sm=\"n\" are assigned to SM n by default; the Dictionary states the same assignment as the default "
+        "of object 0x1C10+n (0x1C12 for SM2, 0x1C13 for SM3; ETG.1000.6). A master that uploads the assignment "
+        "(PdoUpload) and one that takes it from the ESI then build different process images; SSC-generated firmware "
+        "with byte-swapped or stale 0x1C12 defaults is a classic field failure (OpenEtherCATsociety/SOEM #402: "
+        "'reference to the PDO mapping objects is a uint16_t but the bytes are swapped'). Modular devices are "
+        "skipped: their assignment grows with the plugged modules. The order is not compared, only which PDOs are "
+        "assigned.",
+    .bad_example = "<RxPdo Sm=\"2\"><Index>#x1600</Index>… with 0x1C12 default listing #x1601",
+    .good_example = "<RxPdo Sm=\"2\"><Index>#x1600</Index>… with 0x1C12 default listing #x1600",
+    .check = check_assign_default,
+};
+
+// ---- pdo-mapping-default --------------------------------------------------------------------
 
 void check_mapping_default(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : pdo_scopes(document)) {
@@ -156,4 +176,32 @@ void check_mapping_default(const EsiDocument& document, RuleContext& context) {
     }
 }
 
-}  // namespace esi::rules::pdo
+constexpr Rule pdo_mapping_default{
+    .id = "pdo-mapping-default",
+    .default_severity = Severity::warning,
+    .summary = "A mapping object's default (0x16xx/0x1Axx) differs from the PDO's entries",
+    .rationale =
+        "The default value of mapping object 0x16xx/0x1Axx sub-index k is the k-th entry of the PDO encoded as "
+        "index<<16 | subindex<<8 | bit length (ETG.1000.6; STÖBER ECS 5000 EtherCAT manual §7.1.1 shows the byte "
+        "layout). When it disagrees with the ESI entries, a master that reads the mapping from the device and one "
+        "that trusts the ESI exchange differently laid out data (leducp/KickCAT synthesises these objects from the "
+        "PDOs when a Dictionary lacks them).",
+    .bad_example =
+        "<RxPdo><Index>#x1600</Index><Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>8</BitLen>… with 0x1600:01 "
+        "default #x70000110",
+    .good_example =
+        "<RxPdo><Index>#x1600</Index><Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>8</BitLen>… with 0x1600:01 "
+        "default #x70000108",
+    .check = check_mapping_default,
+};
+
+}  // namespace
+
+void add_pdo_default(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        pdo_assign_default,
+        pdo_mapping_default,
+    });
+}
+
+}  // namespace esi::rules

@@ -1,4 +1,4 @@
-// od-… checks on the DataTypes of a Dictionary and on the type names its objects use
+// Rules of the od area on the DataTypes of a Dictionary and on the type names its objects use
 // (ETG.2000 DictionaryType; XSD keys DataTypeKey/BaseTypeRef/SubItemTypeRef/ObjectTypesRef).
 #include <algorithm>
 #include <map>
@@ -6,7 +6,7 @@
 #include <unordered_set>
 #include <vector>
 
-#include "check/od_checks.hpp"
+#include "check/areas.hpp"
 #include "check/od_scope.hpp"
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
@@ -14,7 +14,7 @@
 #include "esi/data_types.hpp"
 #include "esi/number.hpp"
 
-namespace esi::rules::od {
+namespace esi::rules {
 
 namespace {
 
@@ -72,7 +72,7 @@ std::string also_used(std::size_t count) {
     return " (used " + std::to_string(count) + " times; first here)";
 }
 
-}  // namespace
+// ---- od-type-unresolved ---------------------------------------------------------------------
 
 void check_type_unresolved(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
@@ -91,6 +91,23 @@ void check_type_unresolved(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule od_type_unresolved{
+    .id = "od-type-unresolved",
+    .default_severity = Severity::error,
+    .summary = "An Object, SubItem or BaseType names a type that is not defined",
+    .rationale =
+        "Every Object/Type, SubItem/Type and BaseType must name a basic ESI type or a DataType of the same Dictionary; the "
+        "ETG schema states this as the keyrefs ObjectTypesRef, SubItemTypeRef and BaseTypeRef (ETG.2000 EtherCATBase.xsd). "
+        "A type that does not resolve has no size and no sub-entries, so masters cannot read the object and generators "
+        "cannot lay it out (KickCAT: 'unresolved Type reference'). Reported once per missing name.",
+    .bad_example = "<Object><Index>#x6000</Index><Type>DT6000</Type>…</Object> with no DataType DT6000",
+    .good_example =
+        "<DataType><Name>DT6000</Name>…</DataType> … <Object><Index>#x6000</Index><Type>DT6000</Type>…</Object>",
+    .check = check_type_unresolved,
+};
+
+// ---- od-nonstandard-type-name ---------------------------------------------------------------
+
 void check_nonstandard_type_name(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         // A Dictionary may define a DataType of any name, INT8 included (Beckhoff's SoE
@@ -106,6 +123,23 @@ void check_nonstandard_type_name(const EsiDocument& document, RuleContext& conte
                                             std::string(standard_type_name_for(f.culprit)) + "'" + also_used(f.count));
     }
 }
+
+constexpr Rule od_nonstandard_type_name{
+    .id = "od-nonstandard-type-name",
+    .default_severity = Severity::error,
+    .summary = "A type named with a non-standard spelling (UINT16 instead of UINT)",
+    .rationale =
+        "ESI type names are the IEC 61131-3 style names of ETG.2000 and ET9300 Table 22 (USINT, UINT, UDINT, SINT, "
+        "INT, DINT, BOOL, REAL, …). C-style spellings such as UINT8/UINT16/UINT32 or CoE names such as UNSIGNED16 are "
+        "not understood by TwinCAT or the conformance test tool; generators such as pollen-robotics/pyesi emit them. "
+        "The message names the standard spelling. A Dictionary may define a DataType of such a name; only names that "
+        "nothing defines are reported.",
+    .bad_example = "<Object><Index>#x6041</Index><Type>UINT16</Type><BitSize>16</BitSize></Object>",
+    .good_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize></Object>",
+    .check = check_nonstandard_type_name,
+};
+
+// ---- od-type-cycle --------------------------------------------------------------------------
 
 void check_type_cycle(const EsiDocument& document, RuleContext& context) {
     const auto before = [](const SourcePos& a, const SourcePos& b) { return a.line < b.line || (a.line == b.line && a.column < b.column); };
@@ -133,6 +167,22 @@ void check_type_cycle(const EsiDocument& document, RuleContext& context) {
         }
     }
 }
+
+constexpr Rule od_type_cycle{
+    .id = "od-type-cycle",
+    .default_severity = Severity::error,
+    .summary = "DataTypes whose BaseType chain loops",
+    .rationale =
+        "A DataType refers to its base through BaseType; a chain that comes back to where it started has no base at "
+        "all, and a naive resolver recurses forever (KickCAT test throws_on_basetype_cycle limits the depth for this "
+        "reason).",
+    .bad_example =
+        "<DataType><Name>DT_A</Name><BaseType>DT_B</BaseType>…</DataType><DataType><Name>DT_B</Name><BaseType>DT_A</BaseType>…",
+    .good_example = "<DataType><Name>DT_A</Name><BaseType>UINT</BaseType><BitSize>16</BitSize></DataType>",
+    .check = check_type_cycle,
+};
+
+// ---- od-subitem-layout ----------------------------------------------------------------------
 
 void check_subitem_layout(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
@@ -180,6 +230,27 @@ void check_subitem_layout(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule od_subitem_layout{
+    .id = "od-subitem-layout",
+    .default_severity = Severity::error,
+    .summary = "DataType SubItems that overlap or extend past the DataType's BitSize",
+    .rationale =
+        "The SubItems of a record type are laid out by BitOffs and BitSize inside the type's BitSize (ETG.2000 "
+        "DataTypeType). Overlapping SubItems make two sub-entries share bits, and a SubItem past the end reads beyond "
+        "the object; complete-access SDO transfers and generated structs then disagree with the device (ETG.1000.6 "
+        "SDO complete access). Overlaps are checked between sub-indices (SubItems with SubIdx) only, since SoE "
+        "dictionaries describe unions with overlapping structure members; one finding per DataType.",
+    .bad_example =
+        "<DataType><Name>DT2000</Name><BitSize>32</BitSize><SubItem><Name>A</Name><Type>UINT</Type><BitSize>16</BitSize>"
+        "<BitOffs>16</BitOffs></SubItem><SubItem><Name>B</Name><Type>UINT</Type><BitSize>16</BitSize><BitOffs>24</BitOffs>…",
+    .good_example =
+        "<DataType><Name>DT2000</Name><BitSize>48</BitSize><SubItem><Name>A</Name><Type>UINT</Type><BitSize>16</BitSize>"
+        "<BitOffs>16</BitOffs></SubItem><SubItem><Name>B</Name><Type>UINT</Type><BitSize>16</BitSize><BitOffs>32</BitOffs>…",
+    .check = check_subitem_layout,
+};
+
+// ---- od-array-size --------------------------------------------------------------------------
+
 void check_array_size(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
@@ -210,6 +281,27 @@ void check_array_size(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule od_array_size{
+    .id = "od-array-size",
+    .default_severity = Severity::error,
+    .summary = "An array DataType whose ArrayInfo disagrees with its BitSize",
+    .rationale =
+        "An array type's BitSize is the number of elements (ArrayInfo/Elements) times the size of its BaseType "
+        "(ETG.2000 ArrayInfo). When they disagree, the number of sub-indices or their offsets is wrong; KickCAT "
+        "rejects such types ('array BitSize not divisible by elements', test "
+        "throws_on_array_bitsize_not_divisible_by_elements). Elements 0 with BitSize 0 (an empty PDO assignment list) "
+        "is consistent.",
+    .bad_example =
+        "<DataType><Name>DT1C12ARR</Name><BaseType>UINT</BaseType><BitSize>48</BitSize><ArrayInfo><LBound>1</LBound>"
+        "<Elements>2</Elements></ArrayInfo></DataType>",
+    .good_example =
+        "<DataType><Name>DT1C12ARR</Name><BaseType>UINT</BaseType><BitSize>32</BitSize><ArrayInfo><LBound>1</LBound>"
+        "<Elements>2</Elements></ArrayInfo></DataType>",
+    .check = check_array_size,
+};
+
+// ---- od-bitsize -----------------------------------------------------------------------------
+
 void check_bitsize(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
@@ -239,6 +331,22 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
     }
 }
 
+constexpr Rule od_bitsize{
+    .id = "od-bitsize",
+    .default_severity = Severity::warning,
+    .summary = "An Object's or SubItem's BitSize disagrees with its type",
+    .rationale =
+        "BitSize states the size of the object or sub-item; the type states it too (UINT is 16 bits, STRING(10) 80, a "
+        "DataType its own BitSize; ET9300 Table 22, ETG.2000 ObjectType/BitSize). When they differ, SDO uploads, "
+        "complete access and generated object tables disagree about the object's length. A DataType named like a "
+        "basic type (Beckhoff lists <DataType><Name>UINT</Name><BitSize>16</BitSize>) must have that size.",
+    .bad_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>32</BitSize></Object>",
+    .good_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize></Object>",
+    .check = check_bitsize,
+};
+
+// ---- od-duplicate-datatype ------------------------------------------------------------------
+
 void check_duplicate_datatype(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
@@ -252,4 +360,33 @@ void check_duplicate_datatype(const EsiDocument& document, RuleContext& context)
     }
 }
 
-}  // namespace esi::rules::od
+constexpr Rule od_duplicate_datatype{
+    .id = "od-duplicate-datatype",
+    .default_severity = Severity::error,
+    .summary = "Two DataTypes of one Dictionary share a name",
+    .rationale =
+        "DataType names are the keys objects use to refer to types; the ETG schema requires them to be unique "
+        "(EtherCATBase.xsd key DataTypeKey). With two definitions, tools pick either one and may lay the object out "
+        "differently.",
+    .bad_example =
+        "<DataType><Name>DT6000</Name><BitSize>24</BitSize>…</DataType><DataType><Name>DT6000</Name><BitSize>48</BitSize>…",
+    .good_example =
+        "<DataType><Name>DT6000</Name><BitSize>24</BitSize>…</DataType><DataType><Name>DT6010</Name><BitSize>48</BitSize>…",
+    .check = check_duplicate_datatype,
+};
+
+}  // namespace
+
+void add_od_type(std::vector<Rule>& out) {
+    out.insert(out.end(), {
+        od_type_unresolved,
+        od_nonstandard_type_name,
+        od_type_cycle,
+        od_subitem_layout,
+        od_array_size,
+        od_bitsize,
+        od_duplicate_datatype,
+    });
+}
+
+}  // namespace esi::rules
