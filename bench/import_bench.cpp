@@ -11,7 +11,11 @@
 #include <vector>
 
 #include "bench_support.hpp"
+<<<<<<< HEAD
+#include "esi/io/read_file.hpp"
+=======
 #include "esi/import/import.hpp"
+>>>>>>> main
 #include "esi/xml/reader.hpp"
 
 using esi::bench::best_of;

@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "esi/io/read_file.hpp"
 #include "esi/lint/lint.hpp"
 
 extern char** environ;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "esi/io/read_file.hpp"
 #include "esi/lint/lint.hpp"
 
 int main(int argc, char** argv) {

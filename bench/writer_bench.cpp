@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench_support.hpp"
+#include "esi/io/read_file.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/xml/writer.hpp"
 

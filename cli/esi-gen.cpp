@@ -16,9 +16,9 @@
 #include "esi/device_selector.hpp"
 #include "esi/import/import.hpp"
 #include "esi/io/atomic_write.hpp"
+#include "esi/load/document.hpp"
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
-#include "esi/yaml/source.hpp"
 
 namespace {
 
@@ -32,21 +32,6 @@ void print(const esi::Diagnostics& diagnostics) {
     esi::Diagnostics sorted = diagnostics;
     sorted.sort();
     for (const auto& d : sorted) print_diagnostic_line(d, "esi-gen");
-}
-
-struct Source {
-    std::optional<esi::EsiDocument> document;
-    esi::Diagnostics diagnostics;
-};
-
-Source load(const fs::path& path) {
-    const std::string ext = path.extension().string();
-    if (ext == ".yaml" || ext == ".yml") {
-        esi::DeviceSource loaded = esi::load_device_source_file(path);
-        return {std::move(loaded.document), std::move(loaded.diagnostics)};
-    }
-    esi::ReadResult read = esi::read_esi_file(path);
-    return {std::move(read.document), std::move(read.diagnostics)};
 }
 
 // --import ESI.xml -o SOURCE.yaml: an ESI file -> the YAML device source (docs/yaml-import.md).
@@ -155,7 +140,7 @@ int main(int argc, char** argv) {
     }
     options.template_dirs = esi::codegen::template_search_path(user_dirs, executable_path(argc > 0 ? argv[0] : nullptr));
 
-    Source loaded = load(source);
+    esi::LoadedDocument loaded = esi::load_document_file(source);
     print(loaded.diagnostics);
     if (!loaded.document || loaded.diagnostics.has_errors()) return exit_usage;
 

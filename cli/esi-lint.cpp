@@ -8,6 +8,7 @@
 #include <iterator>
 #include <unistd.h>
 
+#include "esi/io/read_file.hpp"
 #include "esi/lint/lint.hpp"
 #include "esi/report/lint_output.hpp"
 #include "esi/version.hpp"

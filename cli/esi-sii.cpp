@@ -13,14 +13,13 @@
 
 #include "esi/device_selector.hpp"
 #include "esi/io/atomic_write.hpp"
+#include "esi/load/document.hpp"
 #include "esi/sii/build.hpp"
 #include "esi/sii/check.hpp"
 #include "esi/sii/decode.hpp"
 #include "esi/sii/image_file.hpp"
 #include "esi/sii/render.hpp"
 #include "esi/version.hpp"
-#include "esi/xml/reader.hpp"
-#include "esi/yaml/source.hpp"
 
 namespace {
 
@@ -33,33 +32,18 @@ void print(std::FILE* stream, const std::string& text) {
     std::fflush(stream);
 }
 
-bool is_yaml(const std::filesystem::path& path) {
-    const std::string ext = path.extension().string();
-    return ext == ".yaml" || ext == ".yml";
-}
-
 // The document of an ESI or YAML input; nullopt (after printing why) when unusable.
 std::optional<esi::EsiDocument> load_document(const std::string& input) {
-    esi::Diagnostics diagnostics;
-    std::optional<esi::EsiDocument> document;
-    if (is_yaml(input)) {
-        esi::DeviceSource source = esi::load_device_source_file(input);
-        diagnostics = std::move(source.diagnostics);
-        document = std::move(source.document);
-    } else {
-        esi::ReadResult read = esi::read_esi_file(input);
-        diagnostics = std::move(read.diagnostics);
-        document = std::move(read.document);
-    }
+    esi::LoadedDocument loaded = esi::load_document_file(input);
     esi::Diagnostics errors;
-    for (const auto& d : diagnostics)
+    for (const auto& d : loaded.diagnostics)
         if (d.severity == esi::Severity::error) errors.add(d);
     print(stderr, esi::sii::render_diagnostics_text(errors));
-    if (!document || (is_yaml(input) && diagnostics.has_errors())) {
+    if (!loaded.usable()) {
         print(stderr, fmt::format("esi-sii: {}: cannot use this input\n", input));
         return std::nullopt;
     }
-    return document;
+    return std::move(loaded.document);
 }
 
 std::string device_label(const esi::Device& d) {
@@ -73,13 +57,6 @@ std::string device_list(const std::vector<const esi::Device*>& devices) {
         out += fmt::format("  --device 0x{:08X}:0x{:08X}  {}\n", d->type.product_code.value_or(0), d->type.revision_no.value_or(0),
                            d->type.text);
     return out;
-}
-
-const esi::EtherCATInfo* info_of(const esi::EsiDocument& document, const esi::Device* device) {
-    for (const auto& info : document.infos)
-        for (const auto& d : info.devices)
-            if (&d == device) return &info;
-    return nullptr;
 }
 
 int run_build(const std::string& input, const std::string& output, const std::string& device_text, const std::string& format_text,
@@ -120,7 +97,7 @@ int run_build(const std::string& input, const std::string& output, const std::st
     esi::sii::BuildOptions options;
     options.include_pdos = !no_pdo;
     options.include_dc = !no_dc;
-    const esi::sii::BuildResult result = esi::sii::build_image(*info_of(*document, &device), device, options, input);
+    const esi::sii::BuildResult result = esi::sii::build_image(*document->info_of(device), device, options, input);
     print(stderr, esi::sii::render_diagnostics_text(result.diagnostics));
     if (!result.ok()) {
         print(stderr, fmt::format("esi-sii build: no image written for {}\n", device_label(device)));

@@ -2,7 +2,9 @@
 # can `find_package(libesi)` and link `libesi::esi`.
 include(CMakePackageConfigHelpers)
 
-install(TARGETS esi EXPORT libesiTargets
+# The layers (libesi::core … libesi::report) and the umbrella libesi::esi that links them all.
+get_property(ESI_LAYER_TARGETS GLOBAL PROPERTY ESI_LAYER_TARGETS)
+install(TARGETS esi ${ESI_LAYER_TARGETS} EXPORT libesiTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
     INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

@@ -91,3 +91,51 @@ TEST(LintConfig, NearestConfigUpwards) {
     ASSERT_TRUE(found);
     EXPECT_EQ(std::filesystem::canonical(*found), std::filesystem::canonical(dir / ".esi-lint.yaml"));
 }
+
+TEST(LintConfig, DuplicateKeysAreErrorsNotTheLastValue) {
+    TempDir dir;
+    write_text(dir / "c.yaml", "rules:\n  xml-hex-prefix: off\n  xml-hex-prefix: error\n");
+    const auto result = esi::load_lint_config(dir / "c.yaml");
+    EXPECT_FALSE(result.config);
+    ASSERT_FALSE(result.diagnostics.empty());
+    EXPECT_EQ(result.diagnostics.items()[0].pos.line, 3u);
+    EXPECT_EQ(result.diagnostics.items()[0].pos.column, 3u);
+}
+
+TEST(LintConfig, LimitsAreReadLikeInADeviceSource) {
+    // The same messages, rule ids and positions as `limits:` in a YAML device source
+    // (tests/yaml/bad_input_test.cpp): one reader serves both.
+    TempDir dir;
+    write_text(dir / "c.yaml", "limits:\n  max_pdo: 4\n  bitlen: [8, 16, sixteen]\n");
+    const auto result = esi::load_lint_config(dir / "c.yaml");
+    EXPECT_FALSE(result.config);
+    ASSERT_EQ(result.diagnostics.size(), 2u);
+    const auto& unknown = result.diagnostics.items()[0];
+    EXPECT_EQ(unknown.rule, "yaml-unknown-key");
+    EXPECT_EQ(unknown.pos.line, 2u);
+    EXPECT_EQ(unknown.pos.column, 3u);
+    EXPECT_NE(unknown.message.find("did you mean 'max_pdos'?"), std::string::npos);
+    const auto& bad_number = result.diagnostics.items()[1];
+    EXPECT_EQ(bad_number.rule, "yaml-type");
+    EXPECT_EQ(bad_number.pos.line, 3u);
+    EXPECT_EQ(bad_number.pos.column, 19u);
+}
+
+TEST(LintConfig, AProfileExtendedTwiceIsNotACycle) {
+    TempDir dir;
+    write_text(dir / "base.yaml", "limits:\n  max_entries_per_pdo: 6\n");
+    write_text(dir / "a.yaml", "extends: base.yaml\n");
+    write_text(dir / "b.yaml", "extends: base.yaml\n");
+    write_text(dir / "c.yaml", "extends: [a.yaml, b.yaml]\n");
+    const auto result = esi::load_lint_config(dir / "c.yaml");
+    ASSERT_TRUE(result.config) << (result.diagnostics.empty() ? "" : result.diagnostics.items()[0].message);
+    EXPECT_EQ(result.config->limits.max_entries_per_pdo, 6u);
+}
+
+TEST(LintConfig, AnEmptyFileConfiguresNothing) {
+    TempDir dir;
+    write_text(dir / "c.yaml", "# nothing yet\n");
+    const auto result = esi::load_lint_config(dir / "c.yaml");
+    ASSERT_TRUE(result.config);
+    EXPECT_TRUE(result.config->rules.empty());
+}

@@ -262,9 +262,9 @@ devices:
     expect_error(s, "yaml-duplicate", 5, 5, "two devices have product code");
 }
 
-TEST(YamlBadInput, LimitsAreCheckedByTheLintConfigParser) {
+TEST(YamlBadInput, LimitsKeysAreCheckedLikeEveryOtherMapping) {
     const DeviceSource s = load_yaml(header + "    limits: { max_pdo: 4 }\n");
-    expect_error(s, "config", 9, 15, "did you mean 'max_pdos'?");
+    expect_error(s, "yaml-unknown-key", 9, 15, "did you mean 'max_pdos'?");
 }
 
 TEST(YamlBadInput, HostileTextNeverThrows) {
@@ -283,7 +283,7 @@ TEST(YamlBadInput, HostileTextNeverThrows) {
 TEST(YamlBadInput, LimitsPositionsAreTheFilesInBlockStyleToo) {
     const DeviceSource s = load_yaml(header + "    limits:\n      max_pdos: { rx: 4, tx: 4 }\n      bitlen: [8, 16, sixteen]\n"
                                               "    physics: YY\n");
-    expect_error(s, "config", 11, 23, "bitlen");
+    expect_error(s, "yaml-type", 11, 23, "bitlen");
 }
 
 TEST(YamlBadInput, LimitsAfterUnicodeTextKeepTheirColumns) {
@@ -291,7 +291,7 @@ TEST(YamlBadInput, LimitsAfterUnicodeTextKeepTheirColumns) {
     const DeviceSource s = load_yaml(
         "vendor: { id: 0x10, name: Example }\n"
         "devices: [{ type: D, name: Größe, product_code: 1, revision: 2, group: G, limits: { max_pdox: 1 } }]\n");
-    expect_error(s, "config", 2, 85, "did you mean 'max_pdos'?");
+    expect_error(s, "yaml-unknown-key", 2, 85, "did you mean 'max_pdos'?");
 }
 
 TEST(YamlBadInput, EscapeHatchXmlMustBeWellFormed) {

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "esi/derive/typed_value.hpp"
+#include "esi/model/typed_value.hpp"
 #include "yaml/yaml_test_support.hpp"
 
 using namespace esi;

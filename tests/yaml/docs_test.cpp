@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "yaml/format_keys.hpp"
+#include "esi/yaml/format_keys.hpp"
 #include "yaml/yaml_test_support.hpp"
 
 using namespace esi;

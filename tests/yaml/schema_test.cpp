@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 #include <regex.h>
 #include <set>
-#include <yaml-cpp/yaml.h>
 
 #include "esi/import/import.hpp"
 #include "esi/xml/reader.hpp"
-#include "yaml/format_keys.hpp"
+#include "esi/yaml/format_keys.hpp"
+#include "esi/yaml/tree.hpp"
 #include "yaml/yaml_test_support.hpp"
 
 using nlohmann::json;
@@ -37,7 +37,7 @@ json load_schema() { return json::parse(esi::test::read_text(esi::test::source_d
 
 // YAML -> JSON the way yaml-language-server sees it: the YAML 1.2 core schema for plain scalars,
 // quoted scalars are strings, keys are strings as written.
-json to_json(const YAML::Node& node) {
+json to_json(const esi::yaml::Node& node) {
     if (node.IsMap()) {
         json out = json::object();
         for (auto it = node.begin(); it != node.end(); ++it) out[it->first.Scalar()] = to_json(it->second);
@@ -50,7 +50,7 @@ json to_json(const YAML::Node& node) {
     }
     if (node.IsNull()) return nullptr;
     const std::string s = node.Scalar();
-    if (node.Tag() == "!") return s;
+    if (node.quoted()) return s;
     if (matches(s, "^(~|null|Null|NULL)$")) return nullptr;
     if (matches(s, "^(true|True|TRUE|false|False|FALSE)$")) return s[0] == 't' || s[0] == 'T';
     try {
@@ -63,6 +63,16 @@ json to_json(const YAML::Node& node) {
     if (matches(s, "^[-+]?([.][0-9]+|[0-9]+([.][0-9]*)?)([eE][-+]?[0-9]+)?$")) return std::stod(s);
     return s;
 }
+
+json yaml_to_json(const std::string& text) {
+    esi::Diagnostics diagnostics;
+    bool empty = false;
+    const auto tree = esi::yaml::Tree::parse(text, "test.yaml", esi::yaml::TreeLimits{}, diagnostics, empty);
+    EXPECT_TRUE(tree) << (diagnostics.empty() ? "empty document" : diagnostics.items()[0].message);
+    return tree ? to_json(esi::yaml::Node(tree->root())) : json();
+}
+
+json yaml_file_to_json(const std::filesystem::path& path) { return yaml_to_json(esi::test::read_text(path)); }
 
 class Validator {
 public:
@@ -245,7 +255,7 @@ TEST(YamlSchema, EverySampleValidates) {
     for (const auto& e : std::filesystem::directory_iterator(esi::test::source_dir() / "samples")) {
         if (e.path().extension() != ".yaml") continue;
         SCOPED_TRACE(e.path().filename().string());
-        const json document = to_json(YAML::LoadFile(e.path().string()));
+        const json document = yaml_file_to_json(e.path());
         EXPECT_EQ(join(validator.validate(document)), "");
         ++count;
     }
@@ -268,13 +278,13 @@ TEST(YamlSchema, ImportedFilesValidate) {
         ASSERT_TRUE(read.document);
         const esi::ImportResult imported = esi::import_device_source(*read.document);
         ASSERT_TRUE(imported.yaml);
-        EXPECT_EQ(join(validator.validate(to_json(YAML::Load(*imported.yaml)))), "");
+        EXPECT_EQ(join(validator.validate(yaml_to_json(*imported.yaml))), "");
     }
 }
 
 TEST(YamlSchema, RejectsUnknownKeysWrongTypesAndMissingKeys) {
     Validator validator(load_schema());
-    const json base = to_json(YAML::LoadFile((esi::test::source_dir() / "samples" / "digital-io-8.yaml").string()));
+    const json base = yaml_file_to_json(esi::test::source_dir() / "samples" / "digital-io-8.yaml");
     ASSERT_TRUE(validator.validate(base).empty());
 
     json unknown = base;
@@ -299,8 +309,7 @@ TEST(YamlSchema, RejectsUnknownKeysWrongTypesAndMissingKeys) {
 }
 
 TEST(YamlSchema, YamlScalarsResolveLikeTheLanguageServer) {
-    const YAML::Node n = YAML::Load("{a: 0x10, b: '0x10', c: 1.5, d: true, e: ~, f: pad8, g: -3}");
-    const json j = to_json(n);
+    const json j = yaml_to_json("{a: 0x10, b: '0x10', c: 1.5, d: true, e: ~, f: pad8, g: -3}");
     EXPECT_EQ(j["a"], 16);
     EXPECT_EQ(j["b"], "0x10");
     EXPECT_EQ(j["c"], 1.5);

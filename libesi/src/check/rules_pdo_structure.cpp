@@ -8,7 +8,7 @@
 #include "check/od_text.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
-#include "esi/check/limits.hpp"
+#include "esi/model/limits.hpp"
 
 namespace esi::rules {
 

@@ -7,7 +7,7 @@
 #include "codegen/mustache.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/text_distance.hpp"
-#include "esi/xml/reader.hpp"
+#include "esi/io/read_file.hpp"
 
 namespace esi::codegen {
 

@@ -7,17 +7,10 @@ namespace esi::codegen {
 
 namespace {
 
-// The catalogue a device belongs to: the SII header needs its Vendor/Id and the group names.
-const EtherCATInfo* info_of(const EsiDocument& document, const Device* device) {
-    for (const auto& info : document.infos)
-        for (const auto& candidate : info.devices)
-            if (&candidate == device) return &info;
-    return nullptr;
-}
-
 Diagnostics produce_sii(const ProduceContext& context, std::string& content, sii::ImageFormat format) {
     Diagnostics diagnostics;
-    const EtherCATInfo* info = info_of(context.document, context.device);
+    // The SII header needs the catalogue's Vendor/Id and group names.
+    const EtherCATInfo* info = context.device ? context.document.info_of(*context.device) : nullptr;
     if (!context.device || !info) {
         diagnostics.emplace(Severity::error, "codegen-sii-device", "the SII image needs a device of an EtherCATInfo catalogue",
                             context.document.path, {});

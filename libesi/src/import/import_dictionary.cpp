@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <set>
 
-#include "esi/derive/typed_value.hpp"
+#include "esi/model/typed_value.hpp"
 #include "esi/model/object_layout.hpp"
 #include "import/import_writer.hpp"
 

@@ -5,191 +5,123 @@
 #include <set>
 
 #include "esi/check/registry.hpp"
-#include "esi/number.hpp"
-#include "esi/text_distance.hpp"
-#include "esi/xml/reader.hpp"
+#include "esi/yaml/limits.hpp"
+#include "esi/yaml/reader.hpp"
+#include "esi/yaml/tree.hpp"
+#include "esi/io/read_file.hpp"
 
 namespace esi {
 
 namespace {
 
-SourcePos mark_of(const YAML::Node& node) {
-    const YAML::Mark mark = node.Mark();
-    if (mark.line < 0) return {};
-    return SourcePos{static_cast<std::uint32_t>(mark.line + 1), static_cast<std::uint32_t>(mark.column + 1)};
-}
+using yaml::Fields;
+using yaml::Node;
 
+// Reads one config file's mapping; `extends` is followed by load_into.
 class ConfigParser {
 public:
-    ConfigParser(std::string path, Diagnostics& diagnostics) : path_(std::move(path)), diagnostics_(diagnostics) {}
+    ConfigParser(const std::string& path, Diagnostics& diagnostics) : reader_(path, diagnostics) {}
 
-    void error(const YAML::Node& at, std::string message) {
-        diagnostics_.emplace(Severity::error, "config", std::move(message), path_, mark_of(at));
-    }
+    yaml::Reader& reader() { return reader_; }
 
-    void check_keys(const YAML::Node& map, std::span<const std::string_view> allowed, std::string_view where) {
-        for (const auto& kv : map) {
-            const std::string key = kv.first.as<std::string>("");
-            if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-            std::string message = "unknown key '" + key + "' in " + std::string(where);
-            if (const std::string suggestion = closest_match(key, allowed); !suggestion.empty())
-                message += "; did you mean '" + suggestion + "'?";
-            error(kv.first, message);
-        }
-    }
-
-    std::optional<std::uint32_t> u32(const YAML::Node& node, std::string_view what) {
-        if (!node.IsScalar()) {
-            error(node, std::string(what) + " must be a number");
-            return std::nullopt;
-        }
-        const ParsedNumber n = parse_number(node.Scalar());
-        if (!n.ok() || n.value.negative || n.value.magnitude > 0xFFFFFFFFu) {
-            error(node, std::string(what) + ": '" + node.Scalar() + "' is not a number from 0 to 0xFFFFFFFF");
-            return std::nullopt;
-        }
-        return static_cast<std::uint32_t>(n.value.magnitude);
-    }
-
-    std::vector<IndexRange> ranges(const YAML::Node& node, std::string_view what) {
-        std::vector<IndexRange> out;
-        if (!node.IsSequence()) {
-            error(node, std::string(what) + " must be a list of ranges such as [0x1600, 0x1603] or \"0x1600-0x1603\"");
-            return out;
-        }
-        for (const auto& item : node) {
-            if (item.IsSequence() && item.size() == 2) {
-                auto first = u32(item[0], what);
-                auto last = u32(item[1], what);
-                if (first && last) out.push_back({*first, *last});
-            } else if (item.IsScalar()) {
-                const std::string s = item.Scalar();
-                const auto dash = s.find_first_of("-", 1);
-                const auto dots = s.find("..");
-                if (dash != std::string::npos || dots != std::string::npos) {
-                    const std::size_t cut = dots != std::string::npos ? dots : dash;
-                    const std::size_t skip = dots != std::string::npos ? 2 : 1;
-                    const ParsedNumber a = parse_number(s.substr(0, cut));
-                    const ParsedNumber b = parse_number(s.substr(cut + skip));
-                    if (a.ok() && b.ok() && a.value.magnitude <= 0xFFFFFFFFu && b.value.magnitude <= 0xFFFFFFFFu)
-                        out.push_back({static_cast<std::uint32_t>(a.value.magnitude), static_cast<std::uint32_t>(b.value.magnitude)});
-                    else
-                        error(item, std::string(what) + ": '" + s + "' is not a range");
-                } else if (auto v = u32(item, what)) {
-                    out.push_back({*v, *v});
-                }
-            } else {
-                error(item, std::string(what) + ": each range is [first, last] or \"first-last\"");
-            }
-        }
-        for (const auto& r : out)
-            if (r.first > r.last) error(node, std::string(what) + ": a range ends before it starts");
-        return out;
-    }
-
-    Limits limits(const YAML::Node& node) {
-        Limits l;
-        if (!node.IsMap()) {
-            error(node, "limits must be a mapping");
-            return l;
-        }
-        static constexpr std::string_view keys[] = {"max_pdos", "pdo_index_ranges", "max_entries_per_pdo", "bitlen", "fixed_sm",
-                                                    "transitions", "max_init_cmd_bytes", "max_mailbox_size", "absent_objects"};
-        check_keys(node, keys, "limits");
-        if (const auto n = node["max_pdos"]) {
-            if (n.IsMap()) {
-                static constexpr std::string_view dir_keys[] = {"rx", "tx"};
-                check_keys(n, dir_keys, "max_pdos");
-                if (n["rx"]) l.max_rx_pdos = u32(n["rx"], "max_pdos.rx");
-                if (n["tx"]) l.max_tx_pdos = u32(n["tx"], "max_pdos.tx");
-            } else if (auto v = u32(n, "max_pdos")) {
-                l.max_rx_pdos = l.max_tx_pdos = v;
-            }
-        }
-        if (const auto n = node["pdo_index_ranges"]) {
-            if (!n.IsMap()) error(n, "pdo_index_ranges must be a mapping with rx and tx");
-            else {
-                static constexpr std::string_view dir_keys[] = {"rx", "tx"};
-                check_keys(n, dir_keys, "pdo_index_ranges");
-                if (n["rx"]) l.rx_pdo_ranges = ranges(n["rx"], "pdo_index_ranges.rx");
-                if (n["tx"]) l.tx_pdo_ranges = ranges(n["tx"], "pdo_index_ranges.tx");
-            }
-        }
-        if (const auto n = node["max_entries_per_pdo"]) l.max_entries_per_pdo = u32(n, "max_entries_per_pdo");
-        if (const auto n = node["bitlen"]) {
-            if (!n.IsSequence()) error(n, "bitlen must be a list of allowed BitLen values");
-            else
-                for (const auto& v : n)
-                    if (auto b = u32(v, "bitlen")) l.allowed_bit_lens.push_back(*b);
-        }
-        if (const auto n = node["fixed_sm"]) {
-            if (!n.IsMap()) error(n, "fixed_sm must map SM numbers to MBoxOut, MBoxIn, Outputs or Inputs");
-            else
-                for (const auto& kv : n) {
-                    auto sm = u32(kv.first, "fixed_sm");
-                    const std::string type = kv.second.as<std::string>("");
-                    if (type != "MBoxOut" && type != "MBoxIn" && type != "Outputs" && type != "Inputs") {
-                        error(kv.second, "fixed_sm: '" + type + "' is not MBoxOut, MBoxIn, Outputs or Inputs");
-                        continue;
-                    }
-                    if (sm) l.fixed_sms[*sm] = type;
-                }
-        }
-        if (const auto n = node["transitions"]) {
-            if (!n.IsSequence()) error(n, "transitions must be a list such as [IP, PS, SO]");
-            else
-                for (const auto& v : n) l.allowed_transitions.push_back(v.as<std::string>(""));
-        }
-        if (const auto n = node["max_init_cmd_bytes"]) l.max_init_cmd_bytes = u32(n, "max_init_cmd_bytes");
-        if (const auto n = node["max_mailbox_size"]) l.max_mailbox_size = u32(n, "max_mailbox_size");
-        if (const auto n = node["absent_objects"]) {
-            if (!n.IsSequence()) error(n, "absent_objects must be a list of object indices");
-            else
-                for (const auto& v : n)
-                    if (auto i = u32(v, "absent_objects")) l.absent_objects.push_back(*i);
-        }
-        return l;
-    }
-
-    std::map<std::string, RuleSetting, std::less<>> rules(const YAML::Node& node) {
+    std::map<std::string, RuleSetting, std::less<>> rules(const Node& node) {
         std::map<std::string, RuleSetting, std::less<>> out;
         if (!node.IsMap()) {
-            error(node, "rules must map rule ids to off, info, warning or error");
+            reader_.error(node, "yaml-type", "'rules' must map rule ids to off, info, warning or error");
             return out;
         }
         std::vector<std::string_view> ids;
         for (const auto& r : all_rules()) ids.push_back(r.id);
-        for (const auto& kv : node) {
-            const std::string id = kv.first.as<std::string>("");
+        const Fields fields(node);
+        for (const auto& item : fields.items()) {
+            const std::string id(item.key);
             if (!find_rule(id)) {
-                std::string message = "unknown rule '" + id + "'";
-                if (const std::string s = closest_match(id, ids); !s.empty()) message += "; did you mean '" + s + "'?";
-                error(kv.first, message);
+                reader_.error(item.key_node, "yaml-unknown-key", "unknown rule '" + id + "'" + yaml::did_you_mean(id, ids));
                 continue;
             }
-            const std::string value = kv.second.IsScalar() ? kv.second.Scalar() : "";
+            const std::string value = item.value.IsScalar() ? item.value.Scalar() : "";
             if (value == "off" || value == "false") out[id] = RuleSetting::off;
             else if (value == "info") out[id] = RuleSetting::info;
             else if (value == "warning") out[id] = RuleSetting::warning;
             else if (value == "error") out[id] = RuleSetting::error;
-            else error(kv.second, "rule '" + id + "': '" + value + "' is not off, info, warning or error");
+            else reader_.error(item.value, "yaml-type", "rule '" + id + "': '" + value + "' is not off, info, warning or error");
         }
         return out;
     }
 
-    std::vector<std::string> strings(const YAML::Node& node, std::string_view what) {
+    // One string or a list of strings.
+    std::vector<std::string> strings(const Node& node, std::string_view what) {
         std::vector<std::string> out;
-        if (node.IsScalar()) out.push_back(node.Scalar());
-        else if (node.IsSequence())
-            for (const auto& v : node) out.push_back(v.as<std::string>(""));
-        else error(node, std::string(what) + " must be a string or a list of strings");
+        if (node.IsScalar()) {
+            out.push_back(node.Scalar());
+        } else if (const auto items = reader_.sequence(node, what)) {
+            for (const Node& item : *items)
+                if (const auto text = reader_.text(item, what)) out.push_back(*text);
+        }
+        return out;
+    }
+
+    std::vector<std::uint32_t> product_codes(const Node& node) {
+        std::vector<std::uint32_t> out;
+        if (node.IsSequence()) {
+            for (const Node& item : node)
+                if (const auto code = reader_.integer<std::uint32_t>(item, "product_codes")) out.push_back(*code);
+        } else if (const auto code = reader_.integer<std::uint32_t>(node, "product_codes")) {
+            out.push_back(*code);
+        }
         return out;
     }
 
 private:
-    std::string path_;
-    Diagnostics& diagnostics_;
+    yaml::Reader reader_;
 };
+
+void load_into(const std::filesystem::path& path, LintConfig& config, Diagnostics& diagnostics,
+               std::set<std::filesystem::path>& visiting);
+
+// One file's settings merged into `config`; `visiting` holds the files whose `extends` are being
+// followed (a file extended twice along different paths is not a cycle).
+void read_config_file(const std::filesystem::path& path, LintConfig& config, Diagnostics& diagnostics,
+                      std::set<std::filesystem::path>& visiting) {
+    std::string io_error;
+    const std::optional<std::string> bytes = read_file_bytes(path, io_error);
+    if (!bytes) {
+        diagnostics.emplace(Severity::error, "config", "cannot read config: " + io_error, path.string(), {});
+        return;
+    }
+    bool empty = false;
+    const std::unique_ptr<yaml::Tree> tree = yaml::Tree::parse(*bytes, path.string(), yaml::TreeLimits{}, diagnostics, empty);
+    // A syntax error has been reported; an empty file configures nothing.
+    if (!tree || tree->root()->kind == yaml::TreeNode::Kind::null) return;
+    ConfigParser parser(path.string(), diagnostics);
+    static constexpr std::string_view keys[] = {"extends", "rules", "limits", "overrides"};
+    const auto root = parser.reader().mapping(Node(tree->root()), keys, "the config");
+    if (!root) return;
+    if (const Node* n = root->find("extends")) {
+        for (const std::string& base : parser.strings(*n, "extends")) {
+            const std::filesystem::path base_path = path.parent_path() / base;
+            load_into(base_path, config, diagnostics, visiting);
+        }
+    }
+    if (const Node* n = root->find("rules"))
+        for (const auto& [id, setting] : parser.rules(*n)) config.rules[id] = setting;
+    if (const Node* n = root->find("limits")) config.limits.merge(yaml::read_limits(parser.reader(), *n));
+    if (const Node* n = root->find("overrides")) {
+        static constexpr std::string_view override_keys[] = {"files", "product_codes", "rules", "limits"};
+        if (const auto items = parser.reader().sequence(*n, "overrides")) {
+            for (const Node& item : *items) {
+                const auto f = parser.reader().mapping(item, override_keys, "an override");
+                if (!f) continue;
+                ConfigOverride o;
+                if (const Node* v = f->find("files")) o.files = parser.strings(*v, "files");
+                if (const Node* v = f->find("product_codes")) o.product_codes = parser.product_codes(*v);
+                if (const Node* v = f->find("rules")) o.rules = parser.rules(*v);
+                if (const Node* v = f->find("limits")) o.limits = yaml::read_limits(parser.reader(), *v);
+                config.overrides.push_back(std::move(o));
+            }
+        }
+    }
+}
 
 void load_into(const std::filesystem::path& path, LintConfig& config, Diagnostics& diagnostics,
                std::set<std::filesystem::path>& visiting) {
@@ -200,62 +132,7 @@ void load_into(const std::filesystem::path& path, LintConfig& config, Diagnostic
         return;
     }
     visiting.insert(canonical);
-    std::string io_error;
-    const std::optional<std::string> bytes = read_file_bytes(path, io_error);
-    if (!bytes) {
-        diagnostics.emplace(Severity::error, "config", "cannot read config: " + io_error, path.string(), {});
-        return;
-    }
-    YAML::Node root;
-    try {
-        root = YAML::Load(*bytes);
-    } catch (const YAML::Exception& e) {
-        diagnostics.emplace(Severity::error, "config", "YAML syntax: " + e.msg, path.string(),
-                            SourcePos{static_cast<std::uint32_t>(e.mark.line + 1), static_cast<std::uint32_t>(e.mark.column + 1)});
-        return;
-    }
-    if (root.IsNull()) return;
-    ConfigParser parser(path.string(), diagnostics);
-    if (!root.IsMap()) {
-        parser.error(root, "the config must be a mapping with extends, rules, limits and overrides");
-        return;
-    }
-    static constexpr std::string_view keys[] = {"extends", "rules", "limits", "overrides"};
-    parser.check_keys(root, keys, "the config");
-    if (const auto n = root["extends"]) {
-        for (const std::string& base : parser.strings(n, "extends")) {
-            const std::filesystem::path base_path = path.parent_path() / base;
-            load_into(base_path, config, diagnostics, visiting);
-        }
-    }
-    if (const auto n = root["rules"])
-        for (const auto& [id, setting] : parser.rules(n)) config.rules[id] = setting;
-    if (const auto n = root["limits"]) config.limits.merge(parser.limits(n));
-    if (const auto n = root["overrides"]) {
-        if (!n.IsSequence()) parser.error(n, "overrides must be a list");
-        else
-            for (const auto& item : n) {
-                if (!item.IsMap()) {
-                    parser.error(item, "each override is a mapping with files, product_codes, rules and limits");
-                    continue;
-                }
-                static constexpr std::string_view override_keys[] = {"files", "product_codes", "rules", "limits"};
-                parser.check_keys(item, override_keys, "an override");
-                ConfigOverride o;
-                if (item["files"]) o.files = parser.strings(item["files"], "files");
-                if (const auto pc = item["product_codes"]) {
-                    if (pc.IsSequence()) {
-                        for (const auto& v : pc)
-                            if (auto code = parser.u32(v, "product_codes")) o.product_codes.push_back(*code);
-                    } else if (auto code = parser.u32(pc, "product_codes")) {
-                        o.product_codes.push_back(*code);
-                    }
-                }
-                if (item["rules"]) o.rules = parser.rules(item["rules"]);
-                if (item["limits"]) o.limits = parser.limits(item["limits"]);
-                config.overrides.push_back(std::move(o));
-            }
-    }
+    read_config_file(path, config, diagnostics, visiting);
     visiting.erase(canonical);
 }
 
@@ -281,11 +158,6 @@ ConfigResult load_lint_config(const std::filesystem::path& path) {
     return result;
 }
 
-Limits parse_limits(const YAML::Node& node, const std::string& path, Diagnostics& diagnostics) {
-    ConfigParser parser(path, diagnostics);
-    return parser.limits(node);
-}
-
 std::optional<std::filesystem::path> find_config_for(const std::filesystem::path& file) {
     std::error_code ec;
     std::filesystem::path dir = std::filesystem::absolute(file, ec).parent_path();
@@ -296,25 +168,6 @@ std::optional<std::filesystem::path> find_config_for(const std::filesystem::path
         dir = dir.parent_path();
     }
     return std::nullopt;
-}
-
-const Limits& EffectiveConfig::limits_for(std::optional<std::uint32_t> product_code) const {
-    if (product_code)
-        for (const auto& [codes, device_limits_entry] : device_limits)
-            if (std::find(codes.begin(), codes.end(), *product_code) != codes.end()) return device_limits_entry;
-    return limits;
-}
-
-std::optional<Severity> EffectiveConfig::severity_of(std::string_view rule_id, Severity default_severity) const {
-    const auto it = rules.find(rule_id);
-    if (it == rules.end()) return default_severity;
-    switch (it->second) {
-        case RuleSetting::off: return std::nullopt;
-        case RuleSetting::info: return Severity::info;
-        case RuleSetting::warning: return Severity::warning;
-        case RuleSetting::error: return Severity::error;
-    }
-    return default_severity;
 }
 
 EffectiveConfig effective_config(const LintConfig& config, const std::filesystem::path& file) {

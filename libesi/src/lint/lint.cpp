@@ -5,7 +5,7 @@
 #include <mutex>
 #include <thread>
 
-#include "check/rule_cache.hpp"
+#include "esi/check/run.hpp"
 #include "lint/file_queue.hpp"
 #include "esi/lint/suppression.hpp"
 #include "esi/lint/xsd.hpp"
@@ -20,19 +20,6 @@ std::size_t LintReport::count(Severity severity) const {
 
 bool LintReport::any_unreadable() const {
     return std::any_of(files.begin(), files.end(), [](const FileReport& f) { return f.unreadable; });
-}
-
-Diagnostics run_rules(const EsiDocument& document, const EffectiveConfig& config) {
-    Diagnostics out;
-    rules::RuleCache cache;  // the rules share Dictionary indexes and object layouts
-    for (const Rule& rule : all_rules()) {
-        if (!rule.check) continue;
-        const std::optional<Severity> severity = config.severity_of(rule.id, rule.default_severity);
-        if (!severity) continue;
-        RuleContext context(document, rule, *severity, config, out, &cache);
-        rule.check(document, context);
-    }
-    return out;
 }
 
 namespace {

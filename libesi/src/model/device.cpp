@@ -53,6 +53,13 @@ const Group* EtherCATInfo::find_group(std::string_view type) const {
     return nullptr;
 }
 
+const EtherCATInfo* EsiDocument::info_of(const Device& device) const {
+    for (const auto& info : infos)
+        for (const auto& candidate : info.devices)
+            if (&candidate == &device) return &info;
+    return nullptr;
+}
+
 std::string_view root_element_name(DocumentKind kind) {
     switch (kind) {
         case DocumentKind::ethercat_info: return "EtherCATInfo";

@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "esi/xml/reader.hpp"
+#include "esi/io/read_file.hpp"
 
 namespace esi::sii {
 

@@ -3,6 +3,8 @@
 
 #include "esi/xml/reader.hpp"
 
+#include "esi/io/read_file.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -1166,50 +1168,6 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     if (options.keep_source) doc.source = source;
     result.document = std::move(doc);
     return result;
-}
-
-std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        error = "is a directory";
-        return std::nullopt;
-    }
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file) {
-        error = std::error_code(errno, std::generic_category()).message();
-        return std::nullopt;
-    }
-    auto too_large = [&] {
-        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
-        std::fclose(file);
-        return std::nullopt;
-    };
-    // A regular file is read into a buffer of its size in one call: growing the string chunk by
-    // chunk copied a multi-MB file several times over and left up to twice its size allocated.
-    // Whatever the size did not cover (a file that grew, a pipe, a device) is appended in chunks,
-    // bounded by max_bytes like the announced size.
-    std::string bytes;
-    std::error_code size_error;
-    const std::uintmax_t size = std::filesystem::file_size(path, size_error);
-    if (!size_error && size > max_bytes) return too_large();
-    if (!size_error) {
-        bytes.resize(static_cast<std::size_t>(size));
-        bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
-    }
-    char buffer[1 << 16];
-    for (bool more = bytes.size() == size || size_error; more;) {
-        const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
-        bytes.append(buffer, n);
-        if (bytes.size() > max_bytes) return too_large();
-        more = n == sizeof buffer;
-    }
-    const bool failed = std::ferror(file) != 0;
-    std::fclose(file);
-    if (failed) {
-        error = "read error";
-        return std::nullopt;
-    }
-    return bytes;
 }
 
 ReadResult read_esi_file(const std::filesystem::path& path, const ReadOptions& options) {

@@ -12,10 +12,10 @@
 
 #include <string_view>
 
-#include "yaml/tree.hpp"
+#include "esi/yaml/tree.hpp"
 
 #include "esi/model/common.hpp"
-#include "yaml/yaml_reader.hpp"
+#include "esi/yaml/reader.hpp"
 
 namespace esi::yaml {
 

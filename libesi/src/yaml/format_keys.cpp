@@ -1,4 +1,4 @@
-#include "yaml/format_keys.hpp"
+#include "esi/yaml/format_keys.hpp"
 
 #include <array>
 

@@ -3,9 +3,7 @@
 
 #include <algorithm>
 
-#include <yaml-cpp/yaml.h>
-
-#include "esi/lint/config.hpp"
+#include "esi/yaml/limits.hpp"
 #include "esi/text_distance.hpp"
 #include "yaml/source_parser.hpp"
 
@@ -17,42 +15,9 @@ bool known_word(std::string_view word, std::span<const std::string_view> words) 
     return std::find(words.begin(), words.end(), word) != words.end();
 }
 
-// Byte offset of a 1-based line:column (columns count code points).
-std::size_t offset_of(const SourceText& source, SourcePos pos) {
-    if (pos.line == 0 || pos.line > source.line_count()) return source.text().size();
-    std::size_t at = source.line_start(pos.line);
-    const std::string& text = source.text();
-    for (std::uint32_t column = 1; column < pos.column && at < text.size() && text[at] != '\n'; ++column) {
-        ++at;
-        while (at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) ++at;
-    }
-    return at;
-}
-
 }  // namespace
 
-// `limits:` is read by esi::parse_limits, shared with .esi-lint.yaml, which takes yaml-cpp nodes.
-// The subtree is handed to yaml-cpp as its own text, with everything before it blanked out so that
-// yaml-cpp's marks are the file's line:column.
-Limits SourceParser::limits(const Node& node) {
-    const std::size_t begin = offset_of(source_, node.pos());
-    const std::size_t end = std::max(begin, offset_of(source_, node.end_pos()));
-    std::string text;
-    text.reserve(end);
-    // One blank per code point, so that columns (which count code points) stay where they were.
-    for (std::size_t i = 0; i < begin; ++i) {
-        const char c = source_.text()[i];
-        if (c == '\n') text.push_back('\n');
-        else if ((static_cast<unsigned char>(c) & 0xC0) != 0x80) text.push_back(' ');
-    }
-    text.append(source_.text(), begin, end - begin);
-    try {
-        return parse_limits(YAML::Load(text), r_.path(), r_.diagnostics());
-    } catch (const YAML::Exception& e) {
-        r_.error(node, "yaml-syntax", "'limits' cannot be read on its own (aliases into it are not supported): " + e.msg);
-    }
-    return {};
-}
+Limits SourceParser::limits(const Node& node) { return read_limits(r_, node); }
 
 std::optional<Eeprom> SourceParser::eeprom(const Node& node) {
     const auto f = r_.mapping(node, Context::eeprom, "eeprom");

@@ -8,9 +8,9 @@
 #include <set>
 
 #include "esi/derive/derive.hpp"
-#include "esi/xml/reader.hpp"
+#include "esi/io/read_file.hpp"
 #include "yaml/extras.hpp"
-#include "yaml/tree.hpp"
+#include "esi/yaml/tree.hpp"
 #include "yaml/source_parser.hpp"
 
 namespace esi {
@@ -215,8 +215,8 @@ DeviceSource load_device_source(std::string_view bytes, const std::string& path,
         document.source = source;
         out.document = std::move(document);
     } catch (const std::exception& e) {
-        // yaml-cpp and the standard library may throw (bad_alloc, a yaml-cpp corner case); the API
-        // promises values, so the failure becomes a diagnostic.
+        // The standard library may throw (bad_alloc); the API promises values, so the failure
+        // becomes a diagnostic.
         out.document.reset();
         diagnostics.emplace(Severity::error, "yaml-internal", std::string("the YAML source could not be processed: ") + e.what(), path,
                             SourcePos{});

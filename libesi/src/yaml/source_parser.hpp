@@ -8,13 +8,13 @@
 #include <string>
 #include <vector>
 
-#include "yaml/tree.hpp"
+#include "esi/yaml/tree.hpp"
 
 #include "esi/derive/derive.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/model/ethercat_info.hpp"
 #include "esi/source_text.hpp"
-#include "yaml/yaml_reader.hpp"
+#include "esi/yaml/reader.hpp"
 
 namespace esi::yaml {
 

@@ -1,4 +1,4 @@
-#include "yaml/tree.hpp"
+#include "esi/yaml/tree.hpp"
 
 #include <unordered_map>
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "esi/check/limits.hpp"
+#include "esi/model/limits.hpp"
 #include "esi/diagnostic.hpp"
 
 namespace esi {

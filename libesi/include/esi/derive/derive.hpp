@@ -26,8 +26,8 @@
 #include <string>
 #include <vector>
 
-#include "esi/check/limits.hpp"
-#include "esi/derive/typed_value.hpp"
+#include "esi/model/limits.hpp"
+#include "esi/model/typed_value.hpp"
 #include "esi/diagnostic.hpp"
 #include "esi/model/ethercat_info.hpp"
 

@@ -16,8 +16,6 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "esi/check/effective_config.hpp"
 #include "esi/diagnostic.hpp"
 
@@ -45,10 +43,6 @@ struct ConfigResult {
 // Reads a config file (and what it extends). Errors are diagnostics; unknown keys and rule ids
 // get a did-you-mean.
 [[nodiscard]] ConfigResult load_lint_config(const std::filesystem::path& path);
-
-// Parses a `limits:` mapping (shared with the YAML device source). Reports into `diagnostics`
-// against `path`.
-[[nodiscard]] Limits parse_limits(const YAML::Node& node, const std::string& path, Diagnostics& diagnostics);
 
 // The nearest .esi-lint.yaml in the file's directory or above; nullopt when there is none.
 [[nodiscard]] std::optional<std::filesystem::path> find_config_for(const std::filesystem::path& file);

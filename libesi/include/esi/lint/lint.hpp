@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "esi/check/registry.hpp"
+#include "esi/check/run.hpp"
 #include "esi/diagnostic.hpp"
 #include "esi/lint/config.hpp"
 #include "esi/source_text.hpp"
@@ -40,9 +41,6 @@ struct LintReport {
     [[nodiscard]] std::size_t count(Severity severity) const;
     [[nodiscard]] bool any_unreadable() const;
 };
-
-// Runs every enabled rule over a document that has been read.
-[[nodiscard]] Diagnostics run_rules(const EsiDocument& document, const EffectiveConfig& config);
 
 // Lints bytes (for stdin or tests) under a given config.
 [[nodiscard]] FileReport lint_bytes(std::string_view bytes, const std::string& path, const EffectiveConfig& config,

@@ -45,6 +45,10 @@ struct EsiDocument {
     Extras root_extras;  // attributes and unknown children of an InfoList or Dict root
     // The decoded text, kept so that reports can quote source lines; may be null.
     SourceTextPtr source;
+
+    // The catalogue that holds `device` (its Vendor, Groups and Modules); null when the device
+    // is not one of this document's.
+    [[nodiscard]] const EtherCATInfo* info_of(const Device& device) const;
 };
 
 }  // namespace esi

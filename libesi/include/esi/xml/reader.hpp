@@ -37,14 +37,4 @@ struct ReadResult {
 // Reads a file; a missing or unreadable file gives an `io-error` diagnostic.
 [[nodiscard]] ReadResult read_esi_file(const std::filesystem::path& path, const ReadOptions& options = {});
 
-// The largest input file the front ends read (256 MiB; the largest vendor ESI file in the
-// corpus has a few MiB). Reading takes about twice the file size in memory, so the bound keeps
-// a hostile or mistaken input (a disk image, /dev/zero) from exhausting memory (docs/reliability.md).
-inline constexpr std::uint64_t max_input_bytes = 256u << 20;
-
-// Reads a whole file into memory; nullopt and a message when it cannot be read or is larger
-// than `max_bytes`.
-[[nodiscard]] std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error,
-                                                         std::uint64_t max_bytes = max_input_bytes);
-
 }  // namespace esi

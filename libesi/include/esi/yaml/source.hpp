@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "esi/check/limits.hpp"
+#include "esi/model/limits.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/diagnostic.hpp"
 #include "esi/model/ethercat_info.hpp"

@@ -1,4 +1,4 @@
-#include "esi/check/limits.hpp"
+#include "esi/model/limits.hpp"
 
 namespace esi {
 

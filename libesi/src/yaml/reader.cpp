@@ -1,4 +1,4 @@
-#include "yaml/yaml_reader.hpp"
+#include "esi/yaml/reader.hpp"
 
 #include <algorithm>
 #include <array>
@@ -58,20 +58,23 @@ std::string_view kind_name(const Node& node) {
 }  // namespace
 
 std::optional<Fields> Reader::mapping(const Node& node, Context context, std::string_view what) {
+    return mapping(node, keys_of(context).keys, what);
+}
+
+std::optional<Fields> Reader::mapping(const Node& node, std::span<const std::string_view> keys, std::string_view what) {
     if (!node.IsMap()) {
         error(node, "yaml-type", "'" + std::string(what) + "' must be a mapping, not " + std::string(kind_name(node)));
         return std::nullopt;
     }
     Fields fields(node);
-    const ContextKeys& allowed = keys_of(context);
     for (const auto& item : fields.items()) {
         if (!item.key_node.IsScalar()) {
             error(item.key_node, "yaml-type", "keys of '" + std::string(what) + "' must be plain words");
             continue;
         }
-        if (std::find(allowed.keys.begin(), allowed.keys.end(), item.key) != allowed.keys.end()) continue;
+        if (std::find(keys.begin(), keys.end(), item.key) != keys.end()) continue;
         std::string message = "unknown key '" + std::string(item.key) + "' in " + std::string(what);
-        message += did_you_mean(item.key, allowed.keys);
+        message += did_you_mean(item.key, keys);
         error(item.key_node, "yaml-unknown-key", message);
     }
     return fields;

@@ -1,4 +1,4 @@
-#include "esi/derive/typed_value.hpp"
+#include "esi/model/typed_value.hpp"
 
 #include <bit>
 #include <cstring>

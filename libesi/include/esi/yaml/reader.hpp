@@ -1,7 +1,7 @@
 #pragma once
-// Typed access to YAML nodes for the device source front end. Every accessor checks the node's
-// kind and range and reports a located diagnostic instead of throwing; callers get nullopt and
-// carry on, so one run reports every problem of a file.
+// Typed access to YAML nodes, for every YAML file libesi reads (device sources, .esi-lint.yaml).
+// Every accessor checks the node's kind and range and reports a located diagnostic instead of
+// throwing; callers get nullopt and carry on, so one run reports every problem of a file.
 
 #include <cstdint>
 #include <limits>
@@ -12,13 +12,13 @@
 #include <utility>
 #include <vector>
 
-#include "yaml/tree.hpp"
+#include "esi/yaml/tree.hpp"
 
-#include "esi/derive/typed_value.hpp"
+#include "esi/model/typed_value.hpp"
 #include "esi/diagnostic.hpp"
 #include "esi/model/common.hpp"
 #include "esi/number.hpp"
-#include "yaml/format_keys.hpp"
+#include "esi/yaml/format_keys.hpp"
 
 namespace esi::yaml {
 
@@ -67,6 +67,8 @@ public:
     // A mapping whose keys must come from `context`; unknown keys are reported with a
     // did-you-mean. nullopt (and a diagnostic) when the node is not a mapping.
     std::optional<Fields> mapping(const Node& node, Context context, std::string_view what);
+    // The same with the allowed keys given directly (files other than the device source).
+    std::optional<Fields> mapping(const Node& node, std::span<const std::string_view> keys, std::string_view what);
     // Reports a required key that is missing.
     bool require(const Fields& fields, std::string_view key, std::string_view what);
 

@@ -1,7 +1,7 @@
 #pragma once
-// The YAML document as the front end walks it: a compact tree built in one pass over libyaml's
-// event stream (libyaml scans about eight times faster than yaml-cpp on device sources, which
-// matters for the esi-gen budget of 200 ms for 5,000 objects, issue 3 §5).
+// A YAML document as libesi reads it (device sources, .esi-lint.yaml): a compact tree built in
+// one pass over libyaml's event stream, fast enough for the esi-gen budget of 200 ms for a
+// 5,000-object source (docs/performance.md).
 //
 // The same pass enforces what a node API cannot see or would make expensive:
 //  - nesting depth;
@@ -57,8 +57,8 @@ private:
     std::uint64_t expanded_ = 0;
 };
 
-// A read-only view of a tree node with the vocabulary of yaml-cpp's Node, so the front end reads
-// like ordinary yaml-cpp code. A default-constructed Node is "not defined".
+// A read-only view of a tree node (IsMap, Scalar, iteration over items or key/value pairs).
+// A default-constructed Node is "not defined".
 class Node {
 public:
     struct Pair;

@@ -1,0 +1,22 @@
+#pragma once
+// Reading an input file whole, bounded: every front end (ESI XML, YAML sources, SII images,
+// configs, templates) reads its input through this, so one limit guards them all.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace esi {
+
+// The largest input file the front ends read (256 MiB; the largest vendor ESI file in the
+// corpus has a few MiB). Reading takes about twice the file size in memory, so the bound keeps
+// a hostile or mistaken input (a disk image, /dev/zero) from exhausting memory (docs/reliability.md).
+inline constexpr std::uint64_t max_input_bytes = 256u << 20;
+
+// Reads a whole file into memory; nullopt and a message when it cannot be read or is larger
+// than `max_bytes`.
+[[nodiscard]] std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error,
+                                                         std::uint64_t max_bytes = max_input_bytes);
+
+}  // namespace esi

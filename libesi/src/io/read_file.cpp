@@ -1,0 +1,52 @@
+#include "esi/io/read_file.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <system_error>
+
+namespace esi {
+
+std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        error = "is a directory";
+        return std::nullopt;
+    }
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) {
+        error = std::error_code(errno, std::generic_category()).message();
+        return std::nullopt;
+    }
+    auto too_large = [&] {
+        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+        std::fclose(file);
+        return std::nullopt;
+    };
+    // A regular file is read into a buffer of its size in one call, so it is neither copied nor
+    // over-allocated. Whatever the size did not cover (a file that grew, a pipe, a device) is
+    // appended in chunks, bounded by max_bytes like the announced size.
+    std::string bytes;
+    std::error_code size_error;
+    const std::uintmax_t size = std::filesystem::file_size(path, size_error);
+    if (!size_error && size > max_bytes) return too_large();
+    if (!size_error) {
+        bytes.resize(static_cast<std::size_t>(size));
+        bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
+    }
+    char buffer[1 << 16];
+    for (bool more = bytes.size() == size || size_error; more;) {
+        const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
+        bytes.append(buffer, n);
+        if (bytes.size() > max_bytes) return too_large();
+        more = n == sizeof buffer;
+    }
+    const bool failed = std::ferror(file) != 0;
+    std::fclose(file);
+    if (failed) {
+        error = "read error";
+        return std::nullopt;
+    }
+    return bytes;
+}
+
+}  // namespace esi
