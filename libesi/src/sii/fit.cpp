@@ -80,8 +80,7 @@ std::vector<FitStep> fit_steps(const Device& device, const BuildOptions& options
     if (pdos && !omitted.pdos) {
         omitted.pdos = true;
         steps.push_back({"the TxPDO and RxPDO categories",
-                         "the mandatory part (header, strings, General, FMMU, SyncM) is all that fits; a master then takes the "
-                         "process data from the ESI",
+                         "nothing else optional is left; a master then takes the process data from the ESI",
                          omitted});
     }
     return steps;

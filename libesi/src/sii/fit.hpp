@@ -22,7 +22,7 @@ struct FitStep {
 //   1. the PDO categories of a device whose CoE mailbox announces SdoInfo, PdoAssign or
 //      PdoConfig (a master reads assignment and mapping over CoE; the SOES images);
 //   2. the descriptions of the DC op modes (Beckhoff's EL2262 image names its modes only);
-//   3. the DC category (no ESI-less master reads it: the ESI configures DC);
+//   3. the DC category (masters configure DC from the ESI; IgH and SOEM do not read it);
 //   4. the PDOs that are not assigned by default (no @Sm);
 //   5. the remaining PDO categories.
 [[nodiscard]] std::vector<FitStep> fit_steps(const Device& device, const BuildOptions& options);
