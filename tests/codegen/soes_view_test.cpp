@@ -69,3 +69,19 @@ TEST(SoesView, MappingAndAssignmentObjectsAreWritableInPreOpOnly) {
 }
 
 }  // namespace
+
+namespace {
+
+// STÖBER A261 (0x2105) keeps its error code in sub-index 0, a UDINT: the object list must not
+// hold the entry count there (2 reads as "cycle time < 1 ms"). The UNSIGNED8 sub-index 0 of an
+// ordinary record still answers its highest sub-index.
+TEST(SoesView, ARecordsDataSubindexZeroGetsNoCountAsItsValue) {
+    const json d = device_view_of("inverter-stoeber-mds5000.yaml");
+    const json& error_code = entry(d, 0x2105, 0);
+    EXPECT_EQ(error_code["data_type"], "UDINT");
+    EXPECT_EQ(error_code["default"]["present"], false);
+    EXPECT_EQ(error_code["soes"]["value"], "0");
+    EXPECT_EQ(entry(d, 0x1600, 0)["soes"]["value"], "0x03");
+}
+
+}  // namespace

@@ -241,8 +241,10 @@ bool add_entry_view(ListBuilder& list, const EntryInput& input, ObjectCode code,
     const BasicType* basic = basic_of(e);
     const Access access = access_of(e.flags);
     EntryValues values = decode_entry_values(e);
-    if (code != ObjectCode::var && e.subindex == 0 && values.default_value.kind == DecodedValue::Kind::none) {
-        // ETG.1000.6: sub-index 0 of an ARRAY or RECORD holds the highest sub-index.
+    if (code != ObjectCode::var && e.subindex == 0 && values.default_value.kind == DecodedValue::Kind::none && basic &&
+        basic->coe_code == 0x0005) {
+        // ETG.1000.6: sub-index 0 of an ARRAY or RECORD, UNSIGNED8, holds the highest sub-index;
+        // a sub-index 0 of another type is data (STÖBER A261.0, a UDINT error code).
         values.default_value.kind = DecodedValue::Kind::unsigned_integer;
         values.default_value.bits = max_subindex;
         values.default_value.i = static_cast<std::int64_t>(max_subindex);
