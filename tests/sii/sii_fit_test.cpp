@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "esi/sii/check.hpp"
 #include "esi/sii/decode.hpp"
 #include "fixture.hpp"
 
@@ -174,6 +175,32 @@ TEST(SiiFit, TooManyStringsAreCuredByLeavingOutPdos) {
     const BuildResult r = build_fixture(xml);
     ASSERT_TRUE(r.ok()) << r.diagnostics.items().front().message;
     EXPECT_TRUE(r.omitted.pdos);
+}
+
+}  // namespace
+
+namespace {
+
+// What the fit leaves out is optional for `check` as well: a fitted image checks clean against
+// its ESI at every step.
+TEST(SiiFit, FittedImagesCheckCleanAgainstTheirEsi) {
+    std::string entries;
+    for (int i = 1; i <= 12; ++i)
+        entries += "<Entry><Index>#x6001</Index><SubIndex>" + std::to_string(i) + "</SubIndex><BitLen>8</BitLen><Name>Extra " +
+                   std::to_string(i) + "</Name><DataType>USINT</DataType></Entry>";
+    const std::string base = replaced(without_coe(fixture_xml({}, "BYTES")), "<Index>#x1A01</Index><Name>Optional</Name>",
+                                      "<Index>#x1A01</Index><Name>Optional</Name>" + entries);
+    for (const std::string bytes : {"512", "384", "256"}) {
+        SCOPED_TRACE(bytes);
+        const std::string xml = replaced(base, "<ByteSize>BYTES</ByteSize>", "<ByteSize>" + bytes + "</ByteSize>");
+        const esi::test::Fixture f = esi::test::load_fixture(xml);
+        const BuildResult r = build_image(f.info(), f.device(), {}, "fixture.xml");
+        ASSERT_TRUE(r.ok()) << r.diagnostics.items().front().message;
+        EXPECT_TRUE(r.omitted.any());
+        const esi::Diagnostics mismatches = check_image(f.info(), f.device(), decode_image(r.bytes), "fixture.xml", "image.bin");
+        EXPECT_FALSE(mismatches.has_errors()) << mismatches.items().front().message;
+        EXPECT_EQ(mismatches.count(Severity::warning), 0u);
+    }
 }
 
 }  // namespace
