@@ -64,7 +64,7 @@ int main(int argc, char** argv) {
     CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
     std::string source, output_dir, dump_model, device, prefix, import_path;
     std::vector<std::string> only, template_dirs;
-    bool list_outputs = false, list_kinds = false;
+    bool list_outputs = false, list_kinds = false, strict_size = false;
     app.add_option("source", source, "YAML device source (.yaml/.yml) or ESI file (.xml)");
     app.add_option("-o,--output", output_dir, "output directory (created when missing)");
     app.add_option("--only", only, "output kinds to generate, comma-separated (default: all; see --list-kinds)")->delimiter(',');
@@ -75,6 +75,8 @@ int main(int argc, char** argv) {
     app.add_option("--prefix", prefix, "C symbol prefix (default: each device's c_name)");
     app.add_flag("--list-outputs", list_outputs, "print the files a run would write, one per line, and exit");
     app.add_flag("--list-kinds", list_kinds, "print the output kinds and exit");
+    app.add_flag("--strict-size", strict_size,
+                 "sii: refuse an image larger than Eeprom/ByteSize instead of leaving out optional content until it fits");
     app.set_version_flag("--version", std::string(esi::version()));
     try {
         app.parse(argc, argv);
@@ -120,6 +122,7 @@ int main(int argc, char** argv) {
     esi::codegen::GenerateOptions options;
     options.output_dir = output_dir;
     options.only = only;
+    options.sii_strict_size = strict_size;
     if (!device.empty()) {
         std::string error;
         options.view.device = esi::parse_device_selector(device, error);

@@ -60,7 +60,7 @@ std::string device_list(const std::vector<const esi::Device*>& devices) {
 }
 
 int run_build(const std::string& input, const std::string& output, const std::string& device_text, const std::string& format_text,
-              bool no_pdo, bool no_dc) {
+              const esi::sii::BuildOptions& options) {
     esi::sii::ImageFormat format{};
     if (!esi::sii::parse_image_format(format_text, format)) {
         print(stderr, fmt::format("esi-sii build: --format must be bin, hex or c (not '{}')\n", format_text));
@@ -94,9 +94,6 @@ int run_build(const std::string& input, const std::string& output, const std::st
         return exit_usage;
     }
     const esi::Device& device = *chosen.front();
-    esi::sii::BuildOptions options;
-    options.include_pdos = !no_pdo;
-    options.include_dc = !no_dc;
     const esi::sii::BuildResult result = esi::sii::build_image(*document->info_of(device), device, options, input);
     print(stderr, esi::sii::render_diagnostics_text(result.diagnostics));
     if (!result.ok()) {
@@ -162,7 +159,7 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", std::string(esi::version()));
 
     std::string build_input, build_output, build_device, build_format = "bin";
-    bool no_pdo = false, no_dc = false;
+    bool no_pdo = false, no_dc = false, strict_size = false;
     CLI::App* build = app.add_subcommand("build", "write the SII image of an ESI or YAML device");
     build->add_option("input", build_input, "ESI.xml or SOURCE.yaml")->required();
     build->add_option("-o,--output", build_output, "image file to write")->required();
@@ -170,6 +167,8 @@ int main(int argc, char** argv) {
     build->add_option("--format", build_format, "image file format: bin (default), hex (Intel HEX) or c (C array)");
     build->add_flag("--no-pdo", no_pdo, "leave out the TxPDO/RxPDO categories");
     build->add_flag("--no-dc", no_dc, "leave out the DC category");
+    build->add_flag("--strict-size", strict_size,
+                    "refuse an image larger than Eeprom/ByteSize instead of leaving out optional content until it fits");
 
     std::string dump_image, dump_format = "text";
     CLI::App* dump = app.add_subcommand("dump", "decode an image (binary or Intel HEX) and report its faults");
@@ -189,7 +188,13 @@ int main(int argc, char** argv) {
         app.exit(e);
         return exit_usage;
     }
-    if (build->parsed()) return run_build(build_input, build_output, build_device, build_format, no_pdo, no_dc);
+    if (build->parsed()) {
+        esi::sii::BuildOptions options;
+        options.include_pdos = !no_pdo;
+        options.include_dc = !no_dc;
+        options.fit_to_eeprom = !strict_size;
+        return run_build(build_input, build_output, build_device, build_format, options);
+    }
     if (dump->parsed()) return run_dump(dump_image, dump_format);
     if (check->parsed()) return run_check(check_esi, check_image);
     return exit_usage;

@@ -49,8 +49,9 @@ TEST(EsiGenSii, ImageEqualsEsiSiiBuildAndChecksCleanAgainstTheGeneratedEsi) {
 }
 
 TEST(EsiGenSii, ImageThatDoesNotFitTheEepromWritesNothing) {
-    // A 128-byte EEPROM cannot hold the header, strings, SMs and PDOs of the sample device: the
-    // builder reports it, and esi-gen writes no file at all (not even the code outputs).
+    // A 128-byte EEPROM holds the header only, not even the mandatory part of the image
+    // (strings, General, FMMU, SyncM): the builder reports it, and esi-gen writes no file at all
+    // (not even the code outputs).
     TempDir dir;
     std::string xml = read_text(tc::sample_esi());
     const auto at = xml.find("<ByteSize>");
@@ -63,6 +64,32 @@ TEST(EsiGenSii, ImageThatDoesNotFitTheEepromWritesNothing) {
     EXPECT_EQ(r.exit_code, 1) << r.err;
     EXPECT_NE(r.err.find("[sii-"), std::string::npos) << r.err;
     EXPECT_TRUE(tc::tree(out).empty());
+}
+
+TEST(EsiGenSii, ImageLeavesOutOptionalContentToFitUnlessStrictSize) {
+    // 384 bytes hold the sample device without its PDO categories (its CoE mailbox has SdoInfo).
+    TempDir dir;
+    std::string xml = read_text(tc::sample_esi());
+    const auto at = xml.find("<ByteSize>");
+    ASSERT_NE(at, std::string::npos);
+    xml.replace(at, xml.find("</ByteSize>", at) - at, "<ByteSize>384");
+    write_text(dir / "small.xml", xml);
+
+    const auto out = dir.path() / "out";
+    const auto r = tc::esi_gen(dir / "small.xml", out, {"--only", "sii"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("info: the TxPDO and RxPDO categories (2 PDOs) left out"), std::string::npos) << r.err;
+    const auto files = tc::tree(out);
+    ASSERT_EQ(files.at("eeprom.bin").size(), 384u);
+    const auto decoded = esi::sii::decode_image(bytes_of(files.at("eeprom.bin")));
+    EXPECT_TRUE(decoded.faults.empty());
+    EXPECT_EQ(decoded.image.find(esi::sii::category::tx_pdo), nullptr);
+
+    const auto strict_out = dir.path() / "strict";
+    const auto strict = tc::esi_gen(dir / "small.xml", strict_out, {"--only", "cpp,sii", "--strict-size"});
+    EXPECT_EQ(strict.exit_code, 1) << strict.err;
+    EXPECT_NE(strict.err.find("[sii-image-too-large]"), std::string::npos) << strict.err;
+    EXPECT_TRUE(tc::tree(strict_out).empty());
 }
 
 TEST(EsiGenSii, ListOutputsNamesTheImageFiles) {

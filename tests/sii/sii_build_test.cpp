@@ -185,12 +185,14 @@ TEST(SiiBuild, EepromDataIsUsedAsItIs) {
     EXPECT_TRUE(has_rule(r.diagnostics, "sii-eeprom-data-fault", Severity::warning));  // 8 bytes is no image
 }
 
-TEST(SiiBuild, ImageLargerThanByteSizeIsAnError) {
-    const BuildResult r = build_fixture(fixture_xml({}, "256"));
+TEST(SiiBuild, ImageLargerThanByteSizeIsAnErrorWithStrictSize) {
+    BuildOptions strict;
+    strict.fit_to_eeprom = false;
+    const BuildResult r = build_fixture(fixture_xml({}, "256"), strict);
     EXPECT_FALSE(r.ok());
     EXPECT_TRUE(has_rule(r.diagnostics, "sii-image-too-large", Severity::error));
     EXPECT_EQ(r.bytes.size(), r.content_bytes);  // not padded, still inspectable
-    BuildOptions small;
+    BuildOptions small = strict;
     small.include_pdos = false;
     small.include_dc = false;
     EXPECT_TRUE(build_fixture(fixture_xml({}, "256"), small).ok());
@@ -234,9 +236,11 @@ TEST(SiiBuild, MoreThan255StringsIsAnError) {
         pdos += "<TxPdo><Index>#x" + std::to_string(1000 + i) + "</Index><Name>PDO " + std::to_string(i) + "</Name></TxPdo>";
     std::string xml = fixture_xml({}, "");
     xml.insert(xml.find("<Mailbox"), pdos);
-    const BuildResult r = build_fixture(xml);
+    BuildOptions strict;
+    strict.fit_to_eeprom = false;
+    const BuildResult r = build_fixture(xml, strict);
     EXPECT_TRUE(has_rule(r.diagnostics, "sii-too-many-strings", Severity::error));
-    BuildOptions no_pdo;
+    BuildOptions no_pdo = strict;
     no_pdo.include_pdos = false;
     EXPECT_TRUE(build_fixture(xml, no_pdo).ok());
 }

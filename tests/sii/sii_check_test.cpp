@@ -145,12 +145,19 @@ TEST(SiiCheck, PdoCategoriesWherePresent) {
         auto& rx = content<Pdos>(i, category::rx_pdo).items;
         rx[0].entries[0].bit_len = 8;
         auto& tx = content<Pdos>(i, category::tx_pdo).items;
-        tx.pop_back();                              // 0x1A01 missing
+        tx.pop_back();                              // 0x1A01 missing: it has no Sm, an info
         tx.push_back(PdoRecord{0x1A7F, 3, 0, 0, 0, {}});  // not in the ESI
     });
     std::size_t pdo = 0;
     for (const auto& d : c.diagnostics) pdo += d.rule == "sii-pdo" && d.severity == Severity::error;
-    EXPECT_EQ(pdo, 3u);
+    EXPECT_EQ(pdo, 2u);
+    EXPECT_TRUE(c.has("sii-pdo", Severity::info));
+    // A PDO of the default assignment (0x1A00, Sm 3) missing is an error.
+    const Checked default_missing = check_edited([](Image& i) {
+        auto& tx = content<Pdos>(i, category::tx_pdo).items;
+        tx.erase(tx.begin());
+    });
+    EXPECT_TRUE(default_missing.has("sii-pdo", Severity::error));
     const Checked absent = check_edited([](Image& i) {
         std::erase_if(i.categories, [](const Category& x) { return x.type == category::tx_pdo || x.type == category::rx_pdo; });
     });

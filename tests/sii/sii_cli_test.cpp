@@ -98,13 +98,30 @@ TEST(SiiCli, BuildWithoutPdoAndDc) {
 }
 
 TEST(SiiCli, BuildRefusesWhatDoesNotFitAndWritesNothing) {
+    // 128 bytes hold the header only: the mandatory part of the image does not fit.
     TempDir dir;
-    write_text(dir / "dev.xml", esi::test::fixture_xml({}, "256"));
+    write_text(dir / "dev.xml", esi::test::fixture_xml({}, "128"));
     const auto r = run({sii(), "build", (dir / "dev.xml").string(), "-o", (dir / "a.bin").string()});
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("[sii-image-too-large]"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the mandatory part"), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("dev.xml:"), std::string::npos);
     EXPECT_FALSE(std::filesystem::exists(dir / "a.bin"));
+}
+
+TEST(SiiCli, BuildLeavesOutOptionalContentWithANoteUnlessStrictSize) {
+    TempDir dir;
+    write_text(dir / "dev.xml", esi::test::fixture_xml({}, "256"));
+    const auto fitted = run({sii(), "build", (dir / "dev.xml").string(), "-o", (dir / "a.bin").string()});
+    EXPECT_EQ(fitted.exit_code, 0) << fitted.err;
+    EXPECT_NE(fitted.err.find("info: the TxPDO and RxPDO categories (3 PDOs) left out"), std::string::npos) << fitted.err;
+    EXPECT_NE(fitted.err.find("[sii-left-out]"), std::string::npos) << fitted.err;
+    EXPECT_EQ(std::filesystem::file_size(dir / "a.bin"), 256u);
+
+    const auto strict = run({sii(), "build", (dir / "dev.xml").string(), "-o", (dir / "b.bin").string(), "--strict-size"});
+    EXPECT_EQ(strict.exit_code, 2);
+    EXPECT_NE(strict.err.find("[sii-image-too-large]"), std::string::npos) << strict.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "b.bin"));
 }
 
 TEST(SiiCli, BuildUnusableInputExitsWith2) {

@@ -416,3 +416,39 @@ TEST(YamlFormat, PaddingKeepsASubindexAsWritten) {
     EXPECT_FALSE(entries[1].subindex.has_value());
     EXPECT_EQ(entries[0].bit_len, 8u);
 }
+
+// ETG.1000.6: sub-index 0 of an ARRAY/RECORD is the UNSIGNED8 number of entries. A record that
+// writes a sub-index 0 of another type holds data there (STÖBER A261.0, the UDINT sync error
+// code, where 2 means "cycle time < 1 ms"); it gets no count as its default. An explicit USINT
+// sub-index 0 without a value is the count.
+TEST(YamlDerive, RecordSubindexZeroGetsTheCountOnlyWhenItIsOne) {
+    const DeviceSource s = load_ok(vendor + R"(devices:
+  - type: D
+    name: Device
+    product_code: 1
+    revision: 1
+    mailbox: { coe: true }
+    objects:
+      0x2105:
+        name: A261 EtherCAT Sync-Diagnose
+        entries:
+          0: { name: Element 0 (error code), type: UDINT, access: ro }
+          1: { name: Element 1 (reserved), type: UDINT, access: ro }
+          2: { name: Element 2 (sync errors), type: UDINT, access: ro }
+      0x2106:
+        name: Counted
+        entries:
+          0: { name: Number of entries, type: USINT, access: ro }
+          1: { name: First, type: UINT, access: ro }
+          2: { name: Second, type: UINT, access: ro }
+)");
+    ASSERT_TRUE(s.document);
+    const Device& d = only_device(s);
+    ObjectLayout layout;
+    const ObjectEntry* error_code = esi::test::object_entry(d, 0x2105, 0, layout);
+    ASSERT_NE(error_code, nullptr);
+    EXPECT_TRUE(!error_code->info || (!error_code->info->default_value && !error_code->info->default_data));
+    const ObjectEntry* count = esi::test::object_entry(d, 0x2106, 0, layout);
+    ASSERT_TRUE(count && count->info);
+    EXPECT_EQ(count->info->default_value, Number::from_unsigned(2));
+}

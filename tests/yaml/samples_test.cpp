@@ -119,8 +119,22 @@ TEST(YamlSamples, ServoFollowsTheItemAfagManuals) {
     EXPECT_EQ(rx.entries[1].bit_len, 8u);
     EXPECT_EQ(rx.entries[1].data_type, "SINT");
 
-    // The InitCmds of §6.7.4 and §7 at PS, with data typed by the object.
+    // The CoE element of §7 (DS402Channels, EdsFile, PdoAssign): services SDO, PDO and emergency
+    // (§6.1), no SDO Information.
     ASSERT_TRUE(d.mailbox && d.mailbox->coe);
+    EXPECT_FALSE(d.mailbox->coe->sdo_info.value_or(false));
+    EXPECT_TRUE(d.mailbox->coe->pdo_assign.value_or(false));
+    EXPECT_EQ(d.mailbox->coe->ds402_channels, 1);
+
+    // The ESC20 has DC (Tabelle 4): SYNC0-synchronous, and frame-synchronous without DC (§6.8).
+    ASSERT_TRUE(d.dc);
+    ASSERT_EQ(d.dc->op_modes.size(), 2u);
+    EXPECT_EQ(d.dc->op_modes[0].assign_activate, 0x0000u);
+    EXPECT_EQ(d.dc->op_modes[1].assign_activate, 0x0300u);
+    ASSERT_TRUE(d.dc->op_modes[1].cycle_time_sync0.has_value());
+    EXPECT_EQ(d.dc->op_modes[1].cycle_time_sync0->factor, 1);
+
+    // The InitCmds of §6.7.4 and §7 at PS, with data typed by the object.
     const auto& cmds = d.mailbox->coe->init_cmds;
     ASSERT_EQ(cmds.size(), 2u);
     EXPECT_EQ(cmds[0].transitions.at(0).text, "PS");
@@ -202,11 +216,15 @@ TEST(YamlSamples, InverterPlacesParametersByTheStoeberRule) {
 
     // DC op modes with the multiplier variants [002 §11.5].
     ASSERT_TRUE(d.dc);
-    ASSERT_EQ(d.dc->op_modes.size(), 2u);
-    EXPECT_EQ(d.dc->op_modes[0].cycle_time_sync0->factor, 1);
-    EXPECT_EQ(d.dc->op_modes[1].cycle_time_sync0->factor, 2);
-    EXPECT_EQ(d.dc->op_modes[1].assign_activate, 0x0300u);
-    EXPECT_EQ(d.dc->op_modes[1].desc, "DC enabled (multiplier = 2)");
+    // Free run (A262.0/A263.0 "0: Not synchronized", [002 §10.1]) and the two DC modes of §11.5.
+    ASSERT_EQ(d.dc->op_modes.size(), 3u);
+    EXPECT_EQ(d.dc->op_modes[0].name, "FreeRun");
+    EXPECT_EQ(d.dc->op_modes[0].assign_activate, 0x0000u);
+    EXPECT_FALSE(d.dc->op_modes[0].cycle_time_sync0.has_value());
+    EXPECT_EQ(d.dc->op_modes[1].cycle_time_sync0->factor, 1);
+    EXPECT_EQ(d.dc->op_modes[2].cycle_time_sync0->factor, 2);
+    EXPECT_EQ(d.dc->op_modes[2].assign_activate, 0x0300u);
+    EXPECT_EQ(d.dc->op_modes[2].desc, "DC enabled (multiplier = 2)");
     // CoE and VoE ("POSITool over EtherCAT").
     ASSERT_TRUE(d.mailbox);
     EXPECT_TRUE(d.mailbox->coe && d.mailbox->voe);

@@ -407,11 +407,7 @@ ViewValue device_view(const EtherCATInfo& info, const Device& device, const std:
     d.add("has_dictionary", device.dictionary() != nullptr);
     d.add("object_count", std::size_t{od.objects.size});
     d.add("entry_count", od.entry_count);
-    {
-        ObjectBuilder soes(arena);
-        soes.add("has_storage", od.soes_storage);
-        d.add("soes", soes.finish());
-    }
+    d.add("soes", soes_view(device, od.soes_storage, arena));
     d.add("objects", od.objects);
     return d.finish();
 }

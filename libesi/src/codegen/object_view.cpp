@@ -88,6 +88,15 @@ Access access_of(const ObjectFlags* flags) {
     return a;
 }
 
+}  // namespace
+
+EntryAccess entry_access(const ObjectFlags* flags) {
+    const Access a = access_of(flags);
+    return {a.writable, a.rx, a.tx};
+}
+
+namespace {
+
 // SOES names its access combinations (soes/esc_coe.h); anything else is spelled bit by bit.
 std::string soes_access(unsigned word) {
     std::string out;
@@ -205,7 +214,22 @@ struct EntryInput {
     ObjectEntry entry;
     bool synthesized = false;
     bool mapped = false;  // some RxPdo/TxPdo entry of the device maps it
+    bool pdo_configuration = false;  // of a PDO mapping (0x1600-0x17FF, 0x1A00-0x1BFF) or assignment (0x1C10-0x1C2F) object
 };
+
+bool is_pdo_configuration(std::uint32_t index) {
+    return (index >= 0x1600 && index <= 0x17FF) || (index >= 0x1A00 && index <= 0x1BFF) || (index >= 0x1C10 && index <= 0x1C2F);
+}
+
+// SOES's access for an entry. A master changes PDO mapping and assignment in PreOp only
+// (ETG.1000.6; the servo manual §6.1.1: "im Zustand Pre-Operational"), and SOES reads them only on
+// PreOp->SafeOp (esc.c sizeOfPDO): a write in SafeOp or Op would leave the process image and the
+// objects disagreeing. Their write access is therefore PreOp only, as in SOES's own dynamic-PDO
+// example (applications/rtl_xmc4_dynpdo: ATYPE_RWpre).
+unsigned soes_access_word(unsigned word, bool pdo_configuration) {
+    if (!pdo_configuration || (word & (write_preop | write_safeop | write_op)) == 0) return word;
+    return (word & ~(write_safeop | write_op)) | write_preop;
+}
 
 // `object_member` is the object's member in SOES's Obj (empty for a VAR, whose single entry is the
 // member itself and carries the object's C name, `var_c_name`). Returns whether the entry lives in
@@ -217,8 +241,10 @@ bool add_entry_view(ListBuilder& list, const EntryInput& input, ObjectCode code,
     const BasicType* basic = basic_of(e);
     const Access access = access_of(e.flags);
     EntryValues values = decode_entry_values(e);
-    if (code != ObjectCode::var && e.subindex == 0 && values.default_value.kind == DecodedValue::Kind::none) {
-        // ETG.1000.6: sub-index 0 of an ARRAY or RECORD holds the highest sub-index.
+    if (code != ObjectCode::var && e.subindex == 0 && values.default_value.kind == DecodedValue::Kind::none && basic &&
+        basic->coe_code == 0x0005) {
+        // ETG.1000.6: sub-index 0 of an ARRAY or RECORD, UNSIGNED8, holds the highest sub-index;
+        // a sub-index 0 of another type is data (STÖBER A261.0, a UDINT error code).
         values.default_value.kind = DecodedValue::Kind::unsigned_integer;
         values.default_value.bits = max_subindex;
         values.default_value.i = static_cast<std::int64_t>(max_subindex);
@@ -281,7 +307,7 @@ bool add_entry_view(ListBuilder& list, const EntryInput& input, ObjectCode code,
     const std::string member = object_member.empty() ? c_name : object_member + "." + c_name;
     ObjectBuilder soes(arena);
     soes.add("datatype", soes_datatype(basic, arena));
-    soes.add("access", soes_access(access.word));
+    soes.add("access", soes_access(soes_access_word(access.word, input.pdo_configuration)));
     soes.add("stored", stored);
     soes.add("member", stored ? arena.string(member) : ViewValue::of_static(""));
     ViewValue data = ViewValue::of_static("NULL");
@@ -358,7 +384,7 @@ ObjectsView objects_view(const Device& device, const ViewContext& context) {
         for (auto& e : layout.entries) {
             if (e.subindex > 255) continue;
             const bool is_mapped = mapped.count({object.index, e.subindex}) != 0;
-            entries.push_back({std::move(e), false, is_mapped});
+            entries.push_back({std::move(e), false, is_mapped, is_pdo_configuration(object.index)});
         }
         std::stable_sort(entries.begin(), entries.end(), [](const EntryInput& a, const EntryInput& b) { return a.entry.subindex < b.entry.subindex; });
         for (std::size_t m = 1; m < entries.size();) {
@@ -376,6 +402,7 @@ ObjectsView objects_view(const Device& device, const ViewContext& context) {
             // Every ARRAY/RECORD answers sub-index 0 (ETG.1000.6); add it when the type lacks it.
             EntryInput count;
             count.synthesized = true;
+            count.pdo_configuration = is_pdo_configuration(object.index);
             count.entry.subindex = 0;
             count.entry.name = "SubIndex 000";
             count.entry.type = "USINT";

@@ -16,9 +16,12 @@ Diagnostics produce_sii(const ProduceContext& context, std::string& content, sii
                             context.document.path, {});
         return diagnostics;
     }
-    // An image that does not fit Eeprom/ByteSize (or a string over 255 bytes) is an error from
-    // the builder: esi-gen then writes nothing, rather than an image the master would misread.
-    sii::BuildResult built = sii::build_image(*info, *context.device, {}, context.document.path);
+    // An image whose mandatory part does not fit Eeprom/ByteSize (or a string over 255 bytes) is
+    // an error from the builder: esi-gen then writes nothing, rather than an image the master
+    // would misread. Optional content it leaves out to fit is a note.
+    sii::BuildOptions build;
+    build.fit_to_eeprom = !context.options.sii_strict_size;
+    sii::BuildResult built = sii::build_image(*info, *context.device, build, context.document.path);
     diagnostics.append(std::move(built.diagnostics));
     if (diagnostics.has_errors()) return diagnostics;
     content = sii::format_image(built.bytes, format);

@@ -49,6 +49,27 @@ struct CType {
 // The basic type a PDO entry carries: its DataType, else the mapped object's entry type.
 [[nodiscard]] const BasicType* pdo_entry_basic_type(const PdoEntry& entry, const Dictionary* dictionary);
 
+// What an entry's ObjectFlags allow: written over SDO (Access rw or wo; an absent Access reads
+// as ro), and mapped into RxPDOs (PdoMapping has R) or TxPDOs (T).
+struct EntryAccess {
+    bool writable = false;
+    bool rx_mappable = false;
+    bool tx_mappable = false;
+};
+[[nodiscard]] EntryAccess entry_access(const ObjectFlags* flags);
+
+// SOES's limits of one direction's process data (ecat_options.h: MAX_MAPPINGS_SM2/3,
+// MAX_RXPDO_SIZE/MAX_TXPDO_SIZE) for the largest assignment and mapping the object dictionary
+// lets a master write; soes_view.cpp explains the bound.
+struct SoesPdoLimits {
+    std::uint64_t max_mappings = 1;  // mapping entries SOES keeps (SMmap2/SMmap3), padding included
+    std::uint64_t max_bytes = 8;     // the rxpdo/txpdo buffer, whole 64-bit words
+    bool remappable = false;         // the master may write the assignment or a mapping
+    std::uint64_t max_entry_bits = 0;  // the largest BitLen a mapping entry may have
+};
+[[nodiscard]] SoesPdoLimits soes_pdo_limits(const Device& device, PdoDirection direction);
+[[nodiscard]] ViewValue soes_view(const Device& device, bool has_storage, ViewArena& arena);
+
 // Vendor Id and name.
 [[nodiscard]] ViewValue vendor_view(const EtherCATInfo& info, ViewArena& arena);
 

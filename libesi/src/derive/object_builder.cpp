@@ -39,6 +39,18 @@ ObjectInfo count_info(std::uint64_t count) {
     return info;
 }
 
+// ETG.1000.6: sub-index 0 of an ARRAY/RECORD is the UNSIGNED8 number of entries. A record that
+// writes a sub-index 0 of another type keeps data there (STÖBER A261.0 is a UDINT error code, and
+// 2 in it means "cycle time < 1 ms"), so only an UNSIGNED8 one is given the count as default.
+bool is_entry_count(const DataTypeSubItem& item) {
+    const BasicType* basic = find_basic_type(item.type);
+    if (!basic) {
+        const std::string_view standard = standard_type_name_for(item.type);
+        basic = standard.empty() ? nullptr : find_basic_type(standard);
+    }
+    return basic && basic->coe_code == 0x0005;
+}
+
 DataTypeSubItem sub0_item(const std::optional<ObjectFlags>& flags) {
     DataTypeSubItem s;
     s.subindex = 0;
@@ -64,7 +76,8 @@ std::string build_record(Dictionary& dictionary, Object& object, const std::stri
         sub0.item.pos = object.pos;
         sub0.info = count_info(highest);
         entries.insert(entries.begin(), std::move(sub0));
-    } else if (!entries.front().info || (!entries.front().info->default_value && !entries.front().info->default_data)) {
+    } else if (is_entry_count(entries.front().item) &&
+               (!entries.front().info || (!entries.front().info->default_value && !entries.front().info->default_data))) {
         if (!entries.front().info) entries.front().info = count_info(highest);
         else entries.front().info->default_value = Number::from_unsigned(highest);
     }

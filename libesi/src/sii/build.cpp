@@ -1,6 +1,8 @@
 #include "esi/sii/build.hpp"
 
 #include <fmt/format.h>
+
+#include <algorithm>
 #include <map>
 
 #include "esi/number.hpp"
@@ -8,6 +10,7 @@
 #include "esi/sii/encode.hpp"
 #include "esi/sii/mapping.hpp"
 #include "esi/sii/text.hpp"
+#include "fit.hpp"
 
 namespace esi::sii {
 
@@ -18,9 +21,9 @@ constexpr std::size_t max_string_bytes = 255;
 
 class Builder {
 public:
-    Builder(const EtherCATInfo& info, const Device& device, const BuildOptions& options, const std::string& path,
-            BuildResult& result)
-        : info_(info), device_(device), options_(options), path_(path), result_(result) {}
+    Builder(const EtherCATInfo& info, const Device& device, const BuildOptions& options, const Omissions& omitted,
+            const std::string& path, BuildResult& result)
+        : info_(info), device_(device), options_(options), omitted_(omitted), path_(path), result_(result) {}
 
     void run();
 
@@ -76,6 +79,7 @@ private:
     const EtherCATInfo& info_;
     const Device& device_;
     const BuildOptions& options_;
+    const Omissions& omitted_;
     const std::string& path_;
     BuildResult& result_;
     Image& image_ = result_.image;
@@ -350,7 +354,7 @@ void Builder::build_sync_managers() {
 }
 
 std::optional<DcOpModes> Builder::build_dc() {
-    if (!options_.include_dc || !device_.dc) return std::nullopt;
+    if (!options_.include_dc || omitted_.dc || !device_.dc) return std::nullopt;
     DcOpModes dc;
     std::size_t skipped = 0;
     for (const auto& op : device_.dc->op_modes) {
@@ -379,7 +383,7 @@ std::optional<DcOpModes> Builder::build_dc() {
         }
         r.assign_activate = static_cast<std::uint16_t>(fit_unsigned(op.assign_activate, 16, label + " AssignActivate", op.assign_activate_pos));
         r.name_idx = add_string(op.name, op.pos, "Dc/OpMode Name");
-        if (op.desc) r.desc_idx = add_string(*op.desc, op.pos, "Dc/OpMode Desc");
+        if (op.desc && !omitted_.dc_descriptions) r.desc_idx = add_string(*op.desc, op.pos, "Dc/OpMode Desc");
         dc.items.push_back(r);
     }
     if (skipped > 0)
@@ -395,6 +399,7 @@ std::optional<DcOpModes> Builder::build_dc() {
 Pdos Builder::build_pdos(const std::vector<Pdo>& pdos) {
     Pdos out;
     for (const auto& pdo : pdos) {
+        if (omitted_.unassigned_pdos && !pdo.sm) continue;
         PdoRecord r;
         const std::string label = fmt::format("{} #x{:04X}", pdo.element_name(), pdo.index);
         r.index = static_cast<std::uint16_t>(fit_unsigned(pdo.index, 16, label + " Index", pdo.index_pos));
@@ -465,7 +470,7 @@ void Builder::run() {
     build_fmmus();
     build_sync_managers();
     std::optional<DcOpModes> dc = build_dc();
-    if (options_.include_pdos) {
+    if (options_.include_pdos && !omitted_.pdos) {
         Pdos tx = build_pdos(device_.tx_pdos);
         Pdos rx = build_pdos(device_.rx_pdos);
         if (!tx.items.empty() || explicit_.count(category::tx_pdo)) add_category(category::tx_pdo, std::move(tx));
@@ -483,7 +488,7 @@ void Builder::run() {
     if (distinct_strings_ > max_strings)
         diag(Severity::error, "sii-too-many-strings",
              fmt::format("the device needs {} distinct strings; the Strings category holds at most {} (its count is one "
-                         "byte). Strings from here on would get index 0; try --no-pdo or --no-dc",
+                         "byte); strings from here on would get index 0",
                          distinct_strings_, max_strings),
              first_overflow_pos_);
     finish();
@@ -517,9 +522,8 @@ void Builder::finish() {
         }
         if (result_.content_bytes > byte_size)
             diag(Severity::error, "sii-image-too-large",
-                 fmt::format("the image takes {} bytes but Eeprom/ByteSize is {} ({} bytes too many); try --no-dc or "
-                             "--no-pdo",
-                             result_.content_bytes, byte_size, result_.content_bytes - byte_size),
+                 fmt::format("the image takes {} bytes but Eeprom/ByteSize is {} ({} bytes too many)", result_.content_bytes,
+                             byte_size, result_.content_bytes - byte_size),
                  pos);
     } else {
         // No ByteSize: the smallest power of two that holds the image (EEPROMs come in powers of two).
@@ -545,12 +549,68 @@ void Builder::finish() {
     h.checksum = config_crc(h.config_data);
 }
 
+BuildResult build_with(const EtherCATInfo& info, const Device& device, const BuildOptions& options, const Omissions& omitted,
+                       const std::string& path) {
+    BuildResult result;
+    Builder(info, device, options, omitted, path, result).run();
+    return result;
+}
+
+// The errors that leaving out optional content can cure: the image or its strings do not fit.
+bool is_fit_error(const Diagnostic& d) {
+    return d.severity == Severity::error && (d.rule == "sii-image-too-large" || d.rule == "sii-too-many-strings");
+}
+
+bool does_not_fit(const BuildResult& result) {
+    return std::any_of(result.diagnostics.begin(), result.diagnostics.end(), is_fit_error);
+}
+
+void append_to_fit_errors(BuildResult& result, std::string_view text) {
+    for (auto& d : result.diagnostics.items())
+        if (is_fit_error(d)) d.message += text;
+}
+
+SourcePos byte_size_pos(const Device& device) {
+    if (!device.eeprom) return device.pos;
+    return device.eeprom->byte_size_pos.known() ? device.eeprom->byte_size_pos : device.eeprom->pos;
+}
+
 }  // namespace
 
 BuildResult build_image(const EtherCATInfo& info, const Device& device, const BuildOptions& options, const std::string& path) {
-    BuildResult result;
-    Builder(info, device, options, path, result).run();
-    return result;
+    BuildResult full = build_with(info, device, options, {}, path);
+    if (full.from_eeprom_data || !does_not_fit(full)) return full;
+    if (!options.fit_to_eeprom) {
+        append_to_fit_errors(full, "; without --strict-size optional content is left out until the image fits (docs/sii.md §1)");
+        return full;
+    }
+    const std::vector<FitStep> steps = fit_steps(device, options);
+    for (std::size_t taken = 0; taken < steps.size(); ++taken) {
+        BuildResult reduced = build_with(info, device, options, steps[taken].omissions, path);
+        if (does_not_fit(reduced)) {
+            if (taken + 1 < steps.size()) continue;
+            std::string left_out;
+            for (const auto& step : steps) left_out += (left_out.empty() ? "" : ", ") + step.what;
+            append_to_fit_errors(reduced, fmt::format(" even without {}: the mandatory part (header, Strings, General, FMMU, "
+                                                      "SyncM and the ESI's Eeprom/Category entries) does not fit",
+                                                      left_out));
+            return reduced;
+        }
+        reduced.omitted = steps[taken].omissions;
+        for (std::size_t k = 0; k <= taken; ++k) {
+            reduced.left_out.push_back(steps[k].what);
+            reduced.diagnostics.emplace(Severity::info, "sii-left-out",
+                                        fmt::format("{} left out so that the image fits its {}-byte EEPROM ({} bytes with "
+                                                    "everything, {} without): {}",
+                                                    steps[k].what, reduced.eeprom_bytes, full.content_bytes, reduced.content_bytes,
+                                                    steps[k].why),
+                                        path, byte_size_pos(device));
+        }
+        return reduced;
+    }
+    append_to_fit_errors(full, "; the device has no optional content to leave out: the mandatory part (header, Strings, General, "
+                               "FMMU, SyncM and the ESI's Eeprom/Category entries) does not fit");
+    return full;
 }
 
 }  // namespace esi::sii

@@ -305,8 +305,17 @@ void Checker::pdos(std::uint16_t type, const std::vector<Pdo>& esi_pdos) {
                 break;
             }
         if (found == p->items.size()) {
-            error("sii-pdo", fmt::format("{} #x{:04X} is not in the image's {} category", pdo.element_name(), pdo.index, name),
-                  pdo.pos, at);
+            // A PDO outside the default assignment (no Sm) is what an image leaves out first
+            // when the PDOs do not all fit its EEPROM (docs/sii.md §1); the default ones a master
+            // without the ESI needs are errors.
+            if (!pdo.sm)
+                mismatch(Severity::info, "sii-pdo",
+                         fmt::format("{} #x{:04X} (no Sm: not assigned by default) is not in the image's {} category",
+                                     pdo.element_name(), pdo.index, name),
+                         pdo.pos, at);
+            else
+                error("sii-pdo", fmt::format("{} #x{:04X} is not in the image's {} category", pdo.element_name(), pdo.index, name),
+                      pdo.pos, at);
             continue;
         }
         matched[found] = true;

@@ -56,6 +56,9 @@ struct GenerateOptions {
     std::vector<std::string> only;                     // kind names; empty = every kind
     std::vector<std::filesystem::path> template_dirs;  // searched in order (see template_lookup.hpp)
     ViewOptions view;
+    // The "sii" kind refuses an image larger than Eeprom/ByteSize instead of leaving out optional
+    // content until it fits (esi-gen --strict-size; docs/sii.md §1).
+    bool sii_strict_size = false;
 };
 
 struct ProduceContext {

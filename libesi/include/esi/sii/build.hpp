@@ -3,8 +3,10 @@
 // shared/domain/prior-art-and-etg-facts.md §6; every choice where public tools disagree is in
 // docs/sii.md). What does not fit is a diagnostic, never a silent truncation: more than 255
 // strings, a string over 255 bytes, more than 255 entries in a PDO, a value too wide for its
-// field, an image larger than Eeprom/ByteSize. An error means the image must not be written;
-// the bytes are still returned so callers can inspect them.
+// field. An image larger than Eeprom/ByteSize leaves out optional content in a fixed order, with
+// a note naming it, and is an error only when the mandatory part does not fit (or with
+// fit_to_eeprom off). An error means the image must not be written; the bytes are still returned
+// so callers can inspect them.
 
 #include <cstdint>
 #include <string>
@@ -26,6 +28,21 @@ struct BuildOptions {
     // Fill the image with 0xFF (erased EEPROM) up to the EEPROM size, as every tool that wrote
     // the corpus images does.
     bool pad_to_eeprom_size = true;
+    // An image larger than Eeprom/ByteSize leaves out optional content until it fits, the way
+    // vendor tools make images (docs/sii.md §1, "Images larger than the EEPROM"); false refuses
+    // it instead (esi-sii build --strict-size).
+    bool fit_to_eeprom = true;
+};
+
+// Optional content a build left out so that the image fits its EEPROM; all false is the whole
+// image. --no-pdo and --no-dc are options, not omissions.
+struct Omissions {
+    bool pdos = false;             // the TxPDO and RxPDO categories
+    bool unassigned_pdos = false;  // the PDOs without @Sm (not in the default assignment)
+    bool dc = false;               // the DC category
+    bool dc_descriptions = false;  // the description strings of the DC op modes
+
+    [[nodiscard]] bool any() const { return pdos || unassigned_pdos || dc || dc_descriptions; }
 };
 
 struct BuildResult {
@@ -34,6 +51,8 @@ struct BuildResult {
     bool from_eeprom_data = false;    // Eeprom/Data was used as it is
     std::size_t content_bytes = 0;    // header + categories + end marker, before padding
     std::uint64_t eeprom_bytes = 0;   // the EEPROM size the image declares in word 0x3E
+    Omissions omitted;                  // what was left out so that the image fits
+    std::vector<std::string> left_out;  // the same for people, in the order it was left out
     Diagnostics diagnostics;          // path: the ESI (or YAML) the device came from
 
     [[nodiscard]] bool ok() const { return !diagnostics.has_errors(); }
