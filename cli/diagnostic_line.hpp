@@ -1,14 +1,14 @@
 #pragma once
-// One diagnostic as one line on stderr, the way every tool but esi-lint (which has its own
-// formats) reports: `path:line:col: severity: message [rule]`.
+// One diagnostic on stderr, the way every tool but esi-lint (which has its own report formats)
+// reports: `path:line:col: severity: message [rule]` and its notes (esi::format_diagnostic).
 
-#include <iostream>
+#include <cstdio>
+#include <string>
 #include <string_view>
 
 #include "esi/diagnostic.hpp"
 
-inline void print_diagnostic_line(const esi::Diagnostic& d, std::string_view path_when_unknown) {
-    std::cerr << (d.path.empty() ? path_when_unknown : std::string_view(d.path));
-    if (d.pos.known()) std::cerr << ':' << d.pos.line << ':' << d.pos.column;
-    std::cerr << ": " << esi::to_string(d.severity) << ": " << d.message << " [" << d.rule << "]\n";
+inline void print_diagnostic(const esi::Diagnostic& d, std::string_view path_when_unknown) {
+    const std::string text = esi::format_diagnostic(d, {.path_when_unknown = path_when_unknown});
+    std::fwrite(text.data(), 1, text.size(), stderr);
 }

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli_common.hpp"
 #include "diagnostic_line.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/diff/diff.hpp"
@@ -14,9 +15,9 @@
 
 namespace {
 
-constexpr int exit_clean = 0;
-constexpr int exit_changes = 1;
-constexpr int exit_usage = 2;
+using esi::cli::exit_findings;
+using esi::cli::exit_ok;
+using esi::cli::exit_usage;
 
 bool reaches(esi::Verdict verdict, const std::string& fail_on) {
     if (fail_on == "never") return false;
@@ -38,30 +39,16 @@ int main(int argc, char** argv) {
     app.add_option("--format", format, "report format: text, json or markdown")->check(CLI::IsMember({"text", "json", "markdown"}));
     app.add_option("--fail-on", fail_on, "lowest class that makes the exit code 1: breaking, any or never")
         ->check(CLI::IsMember({"breaking", "any", "never"}));
-    app.add_option("--device", device, "compare only PRODUCTCODE[:REVISION] (decimal, #x… or 0x…)");
-    app.set_version_flag("--version", std::string(esi::version()));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return exit_usage;
-    }
+    esi::cli::add_device_option(app, device, "compare only this device");
+    esi::cli::add_version_flag(app, "esi-diff");
+    if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
 
     esi::DiffOptions options;
-    if (!device.empty()) {
-        std::string error;
-        options.device = esi::parse_device_selector(device, error);
-        if (!options.device) {
-            std::cerr << "esi-diff: --device: " << error << "\n";
-            return exit_usage;
-        }
-    }
+    if (!esi::cli::parse_device_option("esi-diff", device, options.device)) return exit_usage;
 
     const esi::FileDiff diff = esi::diff_files(old_path, new_path, options);
     if (!diff.result) {
-        for (const auto& d : diff.diagnostics) print_diagnostic_line(d, "");
+        for (const auto& d : diff.diagnostics) print_diagnostic(d, "");
         if (diff.diagnostics.empty()) std::cerr << "esi-diff: could not read the input files\n";
         return exit_usage;
     }
@@ -79,7 +66,6 @@ int main(int argc, char** argv) {
         report = esi::render_diff_markdown(result, labels);
     else
         report = esi::render_diff_text(result, labels);
-    std::fwrite(report.data(), 1, report.size(), stdout);
-    std::fflush(stdout);
-    return reaches(result.verdict, fail_on) ? exit_changes : exit_clean;
+    esi::cli::write_stdout(report);
+    return reaches(result.verdict, fail_on) ? exit_findings : exit_ok;
 }

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <optional>
 
+#include "cli_common.hpp"
 #include "diagnostic_line.hpp"
 #include "esi/codegen/generate.hpp"
 #include "esi/codegen/template_lookup.hpp"
@@ -24,14 +25,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int exit_ok = 0;
-constexpr int exit_failed = 1;
-constexpr int exit_usage = 2;
+using esi::cli::exit_ok;
+using esi::cli::exit_usage;
+constexpr int exit_failed = esi::cli::exit_findings;  // generation or writing failed, nothing written
 
 void print(const esi::Diagnostics& diagnostics) {
     esi::Diagnostics sorted = diagnostics;
     sorted.sort();
-    for (const auto& d : sorted) print_diagnostic_line(d, "esi-gen");
+    for (const auto& d : sorted) print_diagnostic(d, "esi-gen");
 }
 
 // --import ESI.xml -o SOURCE.yaml: an ESI file -> the YAML device source (docs/yaml-import.md).
@@ -70,22 +71,15 @@ int main(int argc, char** argv) {
     app.add_option("--only", only, "output kinds to generate, comma-separated (default: all; see --list-kinds)")->delimiter(',');
     app.add_option("--templates", template_dirs, "directory searched for templates before the built-in ones (repeatable)");
     app.add_option("--dump-model", dump_model, "print the JSON view the templates render from, and exit")->check(CLI::IsMember({"json"}));
-    app.add_option("--device", device, "PRODUCTCODE[:REVISION]: only the matching devices");
+    esi::cli::add_device_option(app, device, "only the matching devices");
     app.add_option("--import", import_path, "ESI file to turn into a YAML device source (written to -o, a file)");
     app.add_option("--prefix", prefix, "C symbol prefix (default: each device's c_name)");
     app.add_flag("--list-outputs", list_outputs, "print the files a run would write, one per line, and exit");
     app.add_flag("--list-kinds", list_kinds, "print the output kinds and exit");
     app.add_flag("--strict-size", strict_size,
                  "sii: refuse an image larger than Eeprom/ByteSize instead of leaving out optional content until it fits");
-    app.set_version_flag("--version", std::string(esi::version()));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return exit_usage;
-    }
+    esi::cli::add_version_flag(app, "esi-gen");
+    if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
 
     if (list_kinds) {
         for (const auto& kind : esi::codegen::output_kinds()) std::cout << kind.name << "\t" << kind.summary << "\n";
@@ -97,14 +91,7 @@ int main(int argc, char** argv) {
             return exit_usage;
         }
         std::optional<esi::DeviceSelector> selector;
-        if (!device.empty()) {
-            std::string error;
-            selector = esi::parse_device_selector(device, error);
-            if (!selector) {
-                std::cerr << "esi-gen: --device: " << error << "\n";
-                return exit_usage;
-            }
-        }
+        if (!esi::cli::parse_device_option("esi-gen", device, selector)) return exit_usage;
         return import_esi(import_path, output_dir, selector);
     }
     if (source.empty()) {
@@ -123,14 +110,7 @@ int main(int argc, char** argv) {
     options.output_dir = output_dir;
     options.only = only;
     options.sii_strict_size = strict_size;
-    if (!device.empty()) {
-        std::string error;
-        options.view.device = esi::parse_device_selector(device, error);
-        if (!options.view.device) {
-            std::cerr << "esi-gen: --device: " << error << "\n";
-            return exit_usage;
-        }
-    }
+    if (!esi::cli::parse_device_option("esi-gen", device, options.view.device)) return exit_usage;
     if (!prefix.empty()) options.view.symbol_prefix = prefix;
     std::vector<fs::path> user_dirs;
     for (const auto& dir : template_dirs) {

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <unistd.h>
 
+#include "cli_common.hpp"
 #include "esi/io/read_file.hpp"
 #include "esi/lint/lint.hpp"
 #include "esi/report/lint_output.hpp"
@@ -15,9 +16,9 @@
 
 namespace {
 
-constexpr int exit_clean = 0;
-constexpr int exit_findings = 1;
-constexpr int exit_usage = 2;
+using esi::cli::exit_findings;
+using esi::cli::exit_ok;
+using esi::cli::exit_usage;
 
 bool reaches(esi::Severity severity, const std::string& fail_on) {
     if (fail_on == "never") return false;
@@ -52,21 +53,14 @@ int main(int argc, char** argv) {
     app.add_option("-j,--jobs", jobs, "files linted in parallel (default: all cores)");
     app.add_flag("--no-source", no_source, "text format: do not quote the source line");
     app.add_flag("--color", color, "text format: colour the output");
-    app.set_version_flag("--version", std::string(esi::version()));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return exit_usage;
-    }
+    esi::cli::add_version_flag(app, "esi-lint");
+    if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
 
     if (list_rules) {
         std::cout << (format == "json"       ? esi::render_rule_list_json()
                        : format == "markdown" ? esi::render_rule_list_markdown()
                                               : esi::render_rule_list_text());
-        return exit_clean;
+        return exit_ok;
     }
     if (format == "markdown") {
         std::cerr << "esi-lint: --format markdown is only for --list-rules\n";
@@ -79,7 +73,7 @@ int main(int argc, char** argv) {
             return exit_usage;
         }
         std::cout << text;
-        return exit_clean;
+        return exit_ok;
     }
     if (paths.empty()) {
         std::cerr << "esi-lint: no input files (give files, directories or - for stdin; --help for usage)\n";
@@ -99,26 +93,19 @@ int main(int argc, char** argv) {
         else files.emplace_back(p);
     }
     if (!files.empty()) report = esi::lint_paths(files, options);
-    std::string bytes;
+    std::optional<std::string> bytes;
     if (use_stdin) {
-        // stdin is bounded like a file (esi::max_input_bytes): a stream that never ends (a
-        // device, a runaway pipe) is an unreadable input, not an exhausted machine.
-        char chunk[1 << 16];
-        while (bytes.size() <= esi::max_input_bytes && (std::cin.read(chunk, sizeof chunk) || std::cin.gcount() > 0))
-            bytes.append(chunk, static_cast<std::size_t>(std::cin.gcount()));
-        if (bytes.size() > esi::max_input_bytes) {
+        std::string error;
+        bytes = esi::read_stdin_bytes(error);
+        if (!bytes) {
             esi::FileReport unreadable;
             unreadable.path = "<stdin>";
             unreadable.unreadable = true;
-            unreadable.diagnostics.emplace(esi::Severity::error, "io-error",
-                                           "cannot read: larger than " + std::to_string(esi::max_input_bytes >> 20) +
-                                               " MiB, the input size limit",
-                                           "<stdin>", {});
+            unreadable.diagnostics.emplace(esi::Severity::error, "io-error", "cannot read: " + error, "<stdin>", {});
             report.files.push_back(std::move(unreadable));
-            use_stdin = false;
         }
     }
-    if (use_stdin) {
+    if (bytes) {
         std::optional<std::filesystem::path> config_path = options.config_path;
         if (!config_path) config_path = esi::find_config_for(std::filesystem::current_path() / "stdin.xml");
         esi::EffectiveConfig effective;
@@ -127,7 +114,7 @@ int main(int argc, char** argv) {
             report.config_diagnostics.append(std::move(loaded.diagnostics));
             if (loaded.config) effective = esi::effective_config(*loaded.config, "stdin.xml");
         }
-        report.files.push_back(esi::lint_bytes(bytes, "<stdin>", effective, options.xsd_dir));
+        report.files.push_back(esi::lint_bytes(*bytes, "<stdin>", effective, options.xsd_dir));
     }
 
     std::string output;
@@ -135,12 +122,11 @@ int main(int argc, char** argv) {
     else if (format == "sarif") output = esi::render_sarif(report, esi::version());
     else if (format == "github") output = esi::render_github(report);
     else output = esi::render_text(report, {.show_source = !no_source, .color = color && isatty(STDOUT_FILENO)});
-    std::fwrite(output.data(), 1, output.size(), stdout);
-    std::fflush(stdout);
+    esi::cli::write_stdout(output);
 
     if (report.any_unreadable() || report.config_diagnostics.has_errors()) return exit_usage;
     for (const auto& file : report.files)
         for (const auto& d : file.diagnostics)
             if (reaches(d.severity, fail_on)) return exit_findings;
-    return exit_clean;
+    return exit_ok;
 }

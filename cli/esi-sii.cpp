@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <iostream>
 
+#include "cli_common.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/io/atomic_write.hpp"
 #include "esi/load/document.hpp"
@@ -23,9 +24,9 @@
 
 namespace {
 
-constexpr int exit_clean = 0;
-constexpr int exit_findings = 1;
-constexpr int exit_usage = 2;
+using esi::cli::exit_findings;
+using esi::cli::exit_ok;
+using esi::cli::exit_usage;
 
 void print(std::FILE* stream, const std::string& text) {
     std::fwrite(text.data(), 1, text.size(), stream);
@@ -67,14 +68,7 @@ int run_build(const std::string& input, const std::string& output, const std::st
         return exit_usage;
     }
     std::optional<esi::DeviceSelector> selector;
-    if (!device_text.empty()) {
-        std::string error;
-        selector = esi::parse_device_selector(device_text, error);
-        if (!selector) {
-            print(stderr, fmt::format("esi-sii build: --device: {}\n", error));
-            return exit_usage;
-        }
-    }
+    if (!esi::cli::parse_device_option("esi-sii build", device_text, selector)) return exit_usage;
     const std::optional<esi::EsiDocument> document = load_document(input);
     if (!document) return exit_usage;
     const std::vector<const esi::Device*> all = esi::select_devices(*document, std::nullopt);
@@ -107,7 +101,7 @@ int run_build(const std::string& input, const std::string& output, const std::st
         print(stderr, esi::sii::render_diagnostics_text(written));
         return exit_usage;
     }
-    return exit_clean;
+    return exit_ok;
 }
 
 int run_dump(const std::string& image_path, const std::string& format) {
@@ -122,7 +116,7 @@ int run_dump(const std::string& image_path, const std::string& format) {
     }
     const esi::sii::DecodedImage decoded = esi::sii::decode_image(*loaded.bytes);
     print(stdout, format == "json" ? esi::sii::render_dump_json(decoded, image_path) : esi::sii::render_dump_text(decoded, image_path));
-    return decoded.has_errors() ? exit_findings : exit_clean;
+    return decoded.has_errors() ? exit_findings : exit_ok;
 }
 
 int run_check(const std::string& esi_path, const std::string& image_path) {
@@ -148,7 +142,7 @@ int run_check(const std::string& esi_path, const std::string& image_path) {
     }
     const esi::Diagnostics mismatches = esi::sii::check_image(*match.info, *match.device, decoded, esi_path, image_path);
     print(stdout, esi::sii::render_check_text(decoded, image_path, mismatches, device_label(*match.device)));
-    return decoded.has_errors() || mismatches.has_errors() ? exit_findings : exit_clean;
+    return decoded.has_errors() || mismatches.has_errors() ? exit_findings : exit_ok;
 }
 
 }  // namespace
@@ -156,14 +150,14 @@ int run_check(const std::string& esi_path, const std::string& image_path) {
 int main(int argc, char** argv) {
     CLI::App app{"esi-sii: build, dump and check SII EEPROM images"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", std::string(esi::version()));
+    esi::cli::add_version_flag(app, "esi-sii");
 
     std::string build_input, build_output, build_device, build_format = "bin";
     bool no_pdo = false, no_dc = false, strict_size = false;
     CLI::App* build = app.add_subcommand("build", "write the SII image of an ESI or YAML device");
     build->add_option("input", build_input, "ESI.xml or SOURCE.yaml")->required();
     build->add_option("-o,--output", build_output, "image file to write")->required();
-    build->add_option("--device", build_device, "PRODUCTCODE[:REVISION] (decimal, #x… or 0x…) when the file has several devices");
+    esi::cli::add_device_option(*build, build_device, "the device, when the file has several");
     build->add_option("--format", build_format, "image file format: bin (default), hex (Intel HEX) or c (C array)");
     build->add_flag("--no-pdo", no_pdo, "leave out the TxPDO/RxPDO categories");
     build->add_flag("--no-dc", no_dc, "leave out the DC category");
@@ -180,14 +174,7 @@ int main(int argc, char** argv) {
     check->add_option("esi", check_esi, "ESI.xml")->required();
     check->add_option("image", check_image, "IMAGE.bin or IMAGE.hex")->required();
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::Success& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return exit_usage;
-    }
+    if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
     if (build->parsed()) {
         esi::sii::BuildOptions options;
         options.include_pdos = !no_pdo;

@@ -42,6 +42,25 @@ struct Diagnostic {
     std::vector<DiagnosticNote> notes;
 };
 
+// How every tool prints a diagnostic, in the layout of GCC and Clang that editors and CI log
+// parsers recognise:
+//   path:line:col: severity: message [rule]
+//   path:line:col: note: message              (one line per note)
+// Unknown parts of a position are left out; an empty path prints as `path_when_unknown`.
+// With `color`, the location is bold and the severity coloured (ANSI), as compilers do on a
+// terminal.
+struct DiagnosticStyle {
+    std::string_view path_when_unknown = "<input>";
+    bool color = false;
+};
+
+[[nodiscard]] std::string format_location(std::string_view path, SourcePos pos, const DiagnosticStyle& style = {});
+// The first line of a diagnostic, with its newline.
+[[nodiscard]] std::string format_diagnostic_line(const Diagnostic& diagnostic, const DiagnosticStyle& style = {});
+[[nodiscard]] std::string format_note_line(const DiagnosticNote& note, const DiagnosticStyle& style = {});
+// The first line and the notes.
+[[nodiscard]] std::string format_diagnostic(const Diagnostic& diagnostic, const DiagnosticStyle& style = {});
+
 class Diagnostics {
 public:
     void add(Diagnostic diagnostic);

@@ -22,6 +22,66 @@ bool parse_severity(std::string_view text, Severity& out) {
     return true;
 }
 
+std::string format_location(std::string_view path, SourcePos pos, const DiagnosticStyle& style) {
+    std::string out(path.empty() ? style.path_when_unknown : path);
+    if (pos.line) {
+        out += ':' + std::to_string(pos.line);
+        if (pos.column) out += ':' + std::to_string(pos.column);
+    }
+    return out;
+}
+
+namespace {
+
+constexpr std::string_view bold = "\x1b[1m";
+constexpr std::string_view reset = "\x1b[0m";
+
+std::string_view color_of(Severity severity) {
+    switch (severity) {
+        case Severity::error: return "\x1b[1;31m";
+        case Severity::warning: return "\x1b[1;35m";
+        case Severity::info: return "\x1b[1;36m";
+    }
+    return "";
+}
+
+// `location: label: message`, the location bold and the label in `label_color` when colouring.
+std::string styled_line(std::string_view location, std::string_view label, std::string_view label_color, std::string_view message,
+                        const DiagnosticStyle& style) {
+    std::string out;
+    out.reserve(location.size() + label.size() + message.size() + 32);
+    if (style.color) out += bold;
+    out += location;
+    if (style.color) out += reset;
+    out += ": ";
+    if (style.color) out += label_color;
+    out += label;
+    if (style.color) out += reset;
+    out += ": ";
+    out += message;
+    return out;
+}
+
+}  // namespace
+
+std::string format_diagnostic_line(const Diagnostic& d, const DiagnosticStyle& style) {
+    std::string out = styled_line(format_location(d.path, d.pos, style), to_string(d.severity), color_of(d.severity), d.message, style);
+    out += " [";
+    out += d.rule;
+    out += "]\n";
+    return out;
+}
+
+std::string format_note_line(const DiagnosticNote& note, const DiagnosticStyle& style) {
+    return styled_line(format_location(note.path, note.pos, style), "note", bold, note.message, style) + "\n";
+}
+
+std::string format_diagnostic(const Diagnostic& d, const DiagnosticStyle& style) {
+    std::string out = format_diagnostic_line(d, style);
+    for (const auto& note : d.notes) out += format_note_line(note, style);
+    return out;
+}
+
 namespace {
 
 // The largest length <= n that does not split a UTF-8 sequence of `text`.

@@ -49,4 +49,23 @@ std::optional<std::string> read_file_bytes(const std::filesystem::path& path, st
     return bytes;
 }
 
+std::optional<std::string> read_stdin_bytes(std::string& error, std::uint64_t max_bytes) {
+    std::string bytes;
+    char buffer[1 << 16];
+    for (;;) {
+        const std::size_t n = std::fread(buffer, 1, sizeof buffer, stdin);
+        bytes.append(buffer, n);
+        if (bytes.size() > max_bytes) {
+            error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+            return std::nullopt;
+        }
+        if (n < sizeof buffer) break;
+    }
+    if (std::ferror(stdin)) {
+        error = "read error";
+        return std::nullopt;
+    }
+    return bytes;
+}
+
 }  // namespace esi

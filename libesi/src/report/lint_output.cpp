@@ -25,11 +25,6 @@ void for_each_diagnostic(const LintReport& report, F&& f) {
         for (const auto& d : file.diagnostics) f(d, file.quoted_lines);
 }
 
-std::string location(const std::string& path, SourcePos pos) {
-    if (!pos.known()) return path;
-    return fmt::format("{}:{}:{}", path, pos.line, pos.column);
-}
-
 // The caret line under a quoted source line: keep tabs so the caret lines up.
 std::string caret_line(std::string_view line, std::uint32_t column) {
     std::string out;
@@ -132,15 +127,9 @@ std::string github_escape_property(std::string_view s) {
 
 std::string render_text(const LintReport& report, const TextOutputOptions& options) {
     std::string out;
-    const char* bold = options.color ? "\x1b[1m" : "";
-    const char* reset = options.color ? "\x1b[0m" : "";
-    auto color_of = [&](Severity s) -> const char* {
-        if (!options.color) return "";
-        return s == Severity::error ? "\x1b[1;31m" : s == Severity::warning ? "\x1b[1;35m" : "\x1b[1;36m";
-    };
+    const DiagnosticStyle style{.path_when_unknown = "", .color = options.color};
     for_each_diagnostic(report, [&](const Diagnostic& d, const std::map<std::uint32_t, std::string>& lines) {
-        out += fmt::format("{}{}{}: {}{}{}: {} [{}]\n", bold, location(d.path, d.pos), reset, color_of(d.severity),
-                           to_string(d.severity), reset, d.message, d.rule);
+        out += format_diagnostic_line(d, style);
         if (options.show_source && d.pos.known()) {
             const auto it = lines.find(d.pos.line);
             const std::string_view line = it == lines.end() ? std::string_view{} : std::string_view(it->second);
@@ -150,7 +139,7 @@ std::string render_text(const LintReport& report, const TextOutputOptions& optio
                 out += fmt::format("{:>6} | {}\n", "", caret_line(quoted.text, quoted.column));
             }
         }
-        for (const auto& note : d.notes) out += fmt::format("{}: note: {}\n", location(note.path, note.pos), note.message);
+        for (const auto& note : d.notes) out += format_note_line(note, style);
     });
     out += summary_line(report);
     return out;

@@ -403,12 +403,7 @@ std::string render_faults_text(const DecodedImage& image, std::string_view path)
 
 std::string render_diagnostics_text(const Diagnostics& diagnostics) {
     std::string out;
-    for (const auto& d : diagnostics) {
-        out += d.path.empty() ? std::string("<input>") : d.path;
-        if (d.pos.known()) out += fmt::format(":{}:{}", d.pos.line, d.pos.column);
-        out += fmt::format(": {}: {} [{}]\n", to_string(d.severity), d.message, d.rule);
-        for (const auto& n : d.notes) out += fmt::format("  note: {}{}{}\n", n.path, n.path.empty() ? "" : ": ", n.message);
-    }
+    for (const auto& d : diagnostics) out += format_diagnostic(d);
     return out;
 }
 

@@ -19,4 +19,8 @@ inline constexpr std::uint64_t max_input_bytes = 256u << 20;
 [[nodiscard]] std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error,
                                                          std::uint64_t max_bytes = max_input_bytes);
 
+// Reads standard input to its end, bounded like a file: a stream that never ends (a device, a
+// runaway pipe) gives nullopt and a message rather than an exhausted machine.
+[[nodiscard]] std::optional<std::string> read_stdin_bytes(std::string& error, std::uint64_t max_bytes = max_input_bytes);
+
 }  // namespace esi

@@ -1,0 +1,45 @@
+#include "cli_common.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+#include "esi/version.hpp"
+
+namespace esi::cli {
+
+std::optional<int> parse_or_exit(CLI::App& app, int argc, char** argv) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return exit_usage;
+    }
+    return std::nullopt;
+}
+
+CLI::Option* add_device_option(CLI::App& app, std::string& text, const std::string& description) {
+    return app.add_option("--device", text, description + ": PRODUCTCODE[:REVISION] (decimal, #x… or 0x…)");
+}
+
+bool parse_device_option(std::string_view tool, const std::string& text, std::optional<DeviceSelector>& out) {
+    out.reset();
+    if (text.empty()) return true;
+    std::string error;
+    out = parse_device_selector(text, error);
+    if (out) return true;
+    std::cerr << tool << ": --device: " << error << "\n";
+    return false;
+}
+
+void add_version_flag(CLI::App& app, std::string_view tool) {
+    app.set_version_flag("--version", std::string(tool) + " (libesi) " + std::string(version()));
+}
+
+void write_stdout(std::string_view text) {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    std::fflush(stdout);
+}
+
+}  // namespace esi::cli
