@@ -172,6 +172,23 @@ private:
         return t;
     }
 
+    // DependOnSlot and DependOnSlotGroup of an Index or Exclude element (ETG.2000 Slots: the
+    // index is raised by the slot's or the slot group's increment for each instance). Every other
+    // attribute goes to `other`; without one they are dropped, as the writer writes these two only.
+    template <class Other>
+    void depend_on_slot(const pugi::xml_node n, std::optional<bool>& on_slot, std::optional<bool>& on_slot_group,
+                        Other&& other) {
+        for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
+            const std::string_view an = a.name();
+            if (is(an, "DependOnSlot")) on_slot = boolean(a, n);
+            else if (is(an, "DependOnSlotGroup")) on_slot_group = boolean(a, n);
+            else other(a);
+        }
+    }
+    void depend_on_slot(const pugi::xml_node n, std::optional<bool>& on_slot, std::optional<bool>& on_slot_group) {
+        depend_on_slot(n, on_slot, on_slot_group, [](pugi::xml_attribute) {});
+    }
+
     // ---- verbatim store ------------------------------------------------------------------
     void verbatim(XmlElement& e, const pugi::xml_node n, std::string_view after, std::size_t depth);
 

@@ -132,21 +132,13 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
             const std::optional<std::uint32_t> index = u32(c);
             p.index = index.value_or(0);
             p.index_invalid = !index;
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "DependOnSlot")) p.index_depend_on_slot = boolean(a, c);
-                else if (is(an, "DependOnSlotGroup")) p.index_depend_on_slot_group = boolean(a, c);
-            }
+            depend_on_slot(c, p.index_depend_on_slot, p.index_depend_on_slot_group);
         } else if (is(name, "Name")) p.names.push_back(localized(c));
         else if (is(name, "Exclude")) {
             PdoExclude e;
             e.pos = pos_of(c);
             e.index = u32(c).value_or(0);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "DependOnSlot")) e.depend_on_slot = boolean(a, c);
-                else if (is(an, "DependOnSlotGroup")) e.depend_on_slot_group = boolean(a, c);
-            }
+            depend_on_slot(c, e.depend_on_slot, e.depend_on_slot_group);
             p.excludes.push_back(e);
         } else if (is(name, "Entry")) read_entry(p.entries.emplace_back(), c);
         else if (is(name, "ExcludedSm")) {
@@ -172,11 +164,7 @@ void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
             e.index = index.value_or(0);
             e.index_invalid = !index;
             e.index_pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "DependOnSlot")) e.index_depend_on_slot = boolean(a, c);
-                else if (is(an, "DependOnSlotGroup")) e.index_depend_on_slot_group = boolean(a, c);
-            }
+            depend_on_slot(c, e.index_depend_on_slot, e.index_depend_on_slot_group);
         } else if (is(name, "SubIndex")) e.subindex = u32(c);
         else if (is(name, "BitLen")) {
             has_bit_len = true;

@@ -159,12 +159,9 @@ void Reader::read_object(Object& o, const pugi::xml_node n) {
             has_index = true;
             o.index = u32(c).value_or(0);
             o.index_pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "DependOnSlot")) o.index_depend_on_slot = boolean(a, c);
-                else if (is(an, "DependOnSlotGroup")) o.index_depend_on_slot_group = boolean(a, c);
-                else if (is(an, "OverwrittenByModule")) o.index_overwritten_by_module = boolean(a, c);
-            }
+            depend_on_slot(c, o.index_depend_on_slot, o.index_depend_on_slot_group, [&](const pugi::xml_attribute a) {
+                if (is(a.name(), "OverwrittenByModule")) o.index_overwritten_by_module = boolean(a, c);
+            });
         } else if (is(name, "Name")) o.names.push_back(localized(c));
         else if (is(name, "Comment")) o.comments.push_back(localized(c));
         else if (is(name, "Type")) {

@@ -19,11 +19,7 @@ void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
         if (is(name, "Transition")) cmd.transitions.push_back(Transition{text_of(c), pos_of(c)});
         else if (is(name, "Index")) {
             cmd.index = u32(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "DependOnSlot")) cmd.index_depend_on_slot = boolean(a, c);
-                else if (is(an, "DependOnSlotGroup")) cmd.index_depend_on_slot_group = boolean(a, c);
-            }
+            depend_on_slot(c, cmd.index_depend_on_slot, cmd.index_depend_on_slot_group);
         } else if (is(name, "SubIndex")) cmd.subindex = u32(c);
         else if (is(name, "IDN")) cmd.idn = i64(c);
         else if (is(name, "Type")) cmd.type = i64(c);
