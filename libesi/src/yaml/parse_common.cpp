@@ -38,6 +38,19 @@ std::optional<std::uint32_t> padding_bits(std::string_view text) {
     return static_cast<std::uint32_t>(n.value.magnitude);
 }
 
+// The keys an InitCmd of the protocol takes (format_keys.cpp).
+Context init_cmd_context(MailboxProtocol protocol) {
+    switch (protocol) {
+        case MailboxProtocol::coe: return Context::init_coe;
+        case MailboxProtocol::soe: return Context::init_soe;
+        case MailboxProtocol::eoe: return Context::init_eoe;
+        case MailboxProtocol::aoe:
+        case MailboxProtocol::foe:  // FoE and VoE have no InitCmds: never asked
+        case MailboxProtocol::voe: break;
+    }
+    return Context::init_aoe;
+}
+
 }  // namespace
 
 ObjectNames index_object_names(const Dictionary& dictionary) {
@@ -184,19 +197,19 @@ std::optional<Profile> SourceParser::profile(const Node& node) {
     return p;
 }
 
-void SourceParser::init_cmds(const Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
+void SourceParser::init_cmds(const Node& node, MailboxProtocol protocol, const ObjectNames& names, std::vector<InitCmd>& out,
                              std::vector<InitCmdValue>* values) {
     const auto items = r_.sequence(node, "init");
     if (!items) return;
     for (const auto& item : *items) {
-        const auto f = r_.mapping(item, context, "an InitCmd");
+        const auto f = r_.mapping(item, init_cmd_context(protocol), "an InitCmd");
         if (!f) continue;
         InitCmd cmd;
         cmd.pos = f->pos();
         if (r_.require(*f, "transition", "an InitCmd"))
             if (auto t = transitions(*f->find("transition"))) cmd.transitions = std::move(*t);
         std::optional<SourceValue> value;
-        if (context == Context::init_coe) {
+        if (protocol == MailboxProtocol::coe) {
             std::optional<ObjectRef> ref;
             if (r_.require(*f, "object", "a CoE InitCmd")) ref = object_ref(*f->find("object"), names, "object");
             if (ref) {
@@ -217,11 +230,11 @@ void SourceParser::init_cmds(const Node& node, Context context, const ObjectName
             r_.optional_bool(*f, "index_depend_on_slot", cmd.index_depend_on_slot);
             r_.optional_bool(*f, "index_depend_on_slot_group", cmd.index_depend_on_slot_group);
         }
-        if (context == Context::init_soe) {
+        if (protocol == MailboxProtocol::soe) {
             if (const Node* n = f->find("idn")) cmd.idn = r_.integer<std::int64_t>(*n, "idn", 0, 0xFFFF);
             r_.optional_integer(*f, "channel", cmd.channel);
         }
-        if (context == Context::init_eoe) {
+        if (protocol == MailboxProtocol::eoe) {
             if (r_.require(*f, "type", "an EoE InitCmd")) cmd.type = r_.integer<std::int64_t>(*f->find("type"), "type", INT32_MIN, INT32_MAX);
         }
         if (const Node* n = f->find("data")) {
@@ -233,7 +246,7 @@ void SourceParser::init_cmds(const Node& node, Context context, const ObjectName
         if (f->has("value") && f->has("data"))
             r_.error(*f->key_node("data"), "yaml-conflict", "give either 'value' (typed by the object) or 'data' (raw bytes), not both");
         else if (!f->has("value") && !f->has("data"))
-            r_.error(f->node(), "yaml-missing-key", context == Context::init_coe ? "an InitCmd needs 'value' or 'data'" : "an InitCmd needs 'data'");
+            r_.error(f->node(), "yaml-missing-key", protocol == MailboxProtocol::coe ? "an InitCmd needs 'value' or 'data'" : "an InitCmd needs 'data'");
         if (const Node* n = f->find("adapt_automatically")) cmd.data_adapt_automatically = r_.boolean(*n, "adapt_automatically");
         r_.optional_text(*f, "comment", cmd.comment);
         r_.optional_bool(*f, "fixed", cmd.fixed);
@@ -301,7 +314,7 @@ std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, 
         r_.optional_bool(*p, "ip", eoe.ip);
         r_.optional_bool(*p, "mac", eoe.mac);
         r_.optional_bool(*p, "time_stamp", eoe.time_stamp);
-        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_eoe, names, eoe.init_cmds, nullptr);
+        if (const Node* n = p->find("init")) init_cmds(*n, MailboxProtocol::eoe, names, eoe.init_cmds, nullptr);
         extras(*p, "xml", eoe.extras);
         m.eoe = std::move(eoe);
     }
@@ -310,7 +323,7 @@ std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, 
         soe.pos = pos_of(*f->find("soe"));
         r_.optional_integer(*p, "channel_count", soe.channel_count);
         r_.optional_bool(*p, "drive_follows_bit3_support", soe.drive_follows_bit3_support);
-        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_soe, names, soe.init_cmds, nullptr);
+        if (const Node* n = p->find("init")) init_cmds(*n, MailboxProtocol::soe, names, soe.init_cmds, nullptr);
         extras(*p, "xml", soe.extras);
         m.soe = std::move(soe);
     }
@@ -320,7 +333,7 @@ std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, 
         r_.optional_bool(*p, "ads_router", aoe.ads_router);
         r_.optional_bool(*p, "generate_own_net_id", aoe.generate_own_net_id);
         r_.optional_bool(*p, "initialize_own_net_id", aoe.initialize_own_net_id);
-        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_aoe, names, aoe.init_cmds, nullptr);
+        if (const Node* n = p->find("init")) init_cmds(*n, MailboxProtocol::aoe, names, aoe.init_cmds, nullptr);
         extras(*p, "xml", aoe.extras);
         m.aoe = std::move(aoe);
     }
