@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "diff/compare.hpp"
+#include "esi/model/mailbox_flags.hpp"
 #include "diff/sequence.hpp"
 
 namespace esi::diff_detail {
@@ -120,6 +121,12 @@ void capability(Recorder& r, const std::string& path, std::string_view name, con
             pb);
 }
 
+template <class Protocol, std::size_t N>
+void capabilities(Recorder& r, const std::string& path, const Protocol& a, const Protocol& b,
+                  const MailboxFlag<Protocol> (&flags)[N]) {
+    for (const auto& flag : flags) capability(r, path, flag.attribute, a.*flag.field, b.*flag.field, a.pos, b.pos);
+}
+
 // Presence of a protocol element; returns whether both are present (and their contents should be compared).
 template <class P>
 bool presence(Recorder& r, const std::string& p, std::string_view name, const std::optional<P>& a, const std::optional<P>& b,
@@ -164,19 +171,15 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (presence(r, coe, "CoE", x.coe, y.coe, x.pos, y.pos)) {
         const CoeProtocol& c = *x.coe;
         const CoeProtocol& d = *y.coe;
-        capability(r, coe, "SdoInfo", c.sdo_info, d.sdo_info, c.pos, d.pos);
-        capability(r, coe, "PdoAssign", c.pdo_assign, d.pdo_assign, c.pos, d.pos);
-        capability(r, coe, "PdoConfig", c.pdo_config, d.pdo_config, c.pos, d.pos);
-        // PdoUpload (SII General CoE details bit 4, "upload at startup") asks the master to read the
-        // PDO configuration at start-up: an instruction, not a capability a configuration relies on.
-        r.value(ChangeKind::mailbox_attribute_changed, attr(coe, "PdoUpload"), "PdoUpload", flag(c.pdo_upload),
-                flag(d.pdo_upload), c.pos, d.pos);
-        capability(r, coe, "CompleteAccess", c.complete_access, d.complete_access, c.pos, d.pos);
-        capability(r, coe, "SegmentedSdo", c.segmented_sdo, d.segmented_sdo, c.pos, d.pos);
-        capability(r, coe, "DiagHistory", c.diag_history, d.diag_history, c.pos, d.pos);
-        capability(r, coe, "SdoUploadWithMaxLength", c.sdo_upload_with_max_length, d.sdo_upload_with_max_length, c.pos, d.pos);
-        capability(r, coe, "TimeDistribution", c.time_distribution, d.time_distribution, c.pos, d.pos);
-        capability(r, coe, "ModuleOD", c.module_od, d.module_od, c.pos, d.pos);
+        for (const auto& f : coe_flags) {
+            // PdoUpload (SII General CoE details bit 4, "upload at startup") asks the master to read the
+            // PDO configuration at start-up: an instruction, not a capability a configuration relies on.
+            if (f.field == &CoeProtocol::pdo_upload)
+                r.value(ChangeKind::mailbox_attribute_changed, attr(coe, f.attribute), f.attribute, flag(c.*f.field),
+                        flag(d.*f.field), c.pos, d.pos);
+            else
+                capability(r, coe, f.attribute, c.*f.field, d.*f.field, c.pos, d.pos);
+        }
         r.value(ChangeKind::mailbox_channels_changed, attr(coe, "DS402Channels"), "DS402Channels", dec(c.ds402_channels),
                 dec(d.ds402_channels), c.pos, d.pos);
         r.value(ChangeKind::mailbox_attribute_changed, attr(coe, "EdsFile"), "EdsFile", c.eds_file, d.eds_file, c.pos, d.pos);
@@ -192,9 +195,7 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (presence(r, eoe, "EoE", x.eoe, y.eoe, x.pos, y.pos)) {
         const EoeProtocol& c = *x.eoe;
         const EoeProtocol& d = *y.eoe;
-        capability(r, eoe, "IP", c.ip, d.ip, c.pos, d.pos);
-        capability(r, eoe, "MAC", c.mac, d.mac, c.pos, d.pos);
-        capability(r, eoe, "TimeStamp", c.time_stamp, d.time_stamp, c.pos, d.pos);
+        capabilities(r, eoe, c, d, eoe_flags);
         compare_init_cmds(r, eoe, MailboxProtocol::eoe, c.init_cmds, d.init_cmds, c.pos, d.pos);
         compare_extras(r, eoe, c.extras, d.extras, c.pos, d.pos);
     }
@@ -205,7 +206,7 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
         const SoeProtocol& d = *y.soe;
         r.value(ChangeKind::mailbox_channels_changed, attr(soe, "ChannelCount"), "ChannelCount", dec(c.channel_count),
                 dec(d.channel_count), c.pos, d.pos);
-        capability(r, soe, "DriveFollowsBit3Support", c.drive_follows_bit3_support, d.drive_follows_bit3_support, c.pos, d.pos);
+        capabilities(r, soe, c, d, soe_flags);
         compare_init_cmds(r, soe, MailboxProtocol::soe, c.init_cmds, d.init_cmds, c.pos, d.pos);
         compare_extras(r, soe, c.extras, d.extras, c.pos, d.pos);
     }
@@ -214,9 +215,7 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (presence(r, aoe, "AoE", x.aoe, y.aoe, x.pos, y.pos)) {
         const AoeProtocol& c = *x.aoe;
         const AoeProtocol& d = *y.aoe;
-        capability(r, aoe, "AdsRouter", c.ads_router, d.ads_router, c.pos, d.pos);
-        capability(r, aoe, "GenerateOwnNetId", c.generate_own_net_id, d.generate_own_net_id, c.pos, d.pos);
-        capability(r, aoe, "InitializeOwnNetId", c.initialize_own_net_id, d.initialize_own_net_id, c.pos, d.pos);
+        capabilities(r, aoe, c, d, aoe_flags);
         compare_init_cmds(r, aoe, MailboxProtocol::aoe, c.init_cmds, d.init_cmds, c.pos, d.pos);
         compare_extras(r, aoe, c.extras, d.extras, c.pos, d.pos);
     }

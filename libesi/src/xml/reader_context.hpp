@@ -16,6 +16,7 @@
 #include <string_view>
 #include <type_traits>
 
+#include "esi/model/mailbox_flags.hpp"
 #include "esi/number.hpp"
 #include "esi/source_text.hpp"
 #include "esi/xml/reader.hpp"
@@ -250,7 +251,8 @@ private:
     // reader_mailbox.cpp
     void read_mailbox(Mailbox& out, const pugi::xml_node n);
     void read_init_cmd(InitCmd& out, const pugi::xml_node n);
-    void read_coe(CoeProtocol& out, const pugi::xml_node n);
+    template <class Protocol, std::size_t N, class Attribute>
+    void read_protocol(Protocol& out, const pugi::xml_node n, const MailboxFlag<Protocol> (&flags)[N], Attribute&& attribute);
     // reader_dictionary.cpp
     void read_profile(Profile& out, const pugi::xml_node n);
     void read_dictionary(Dictionary& out, const pugi::xml_node n);

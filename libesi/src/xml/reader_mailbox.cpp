@@ -5,6 +5,13 @@
 
 namespace esi::xml_reader {
 
+namespace {
+
+// EoE and AoE have flags only.
+constexpr auto no_other_attribute = [](const pugi::xml_attribute) { return false; };
+
+}  // namespace
+
 void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
     cmd.pos = pos_of(n);
     for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
@@ -33,28 +40,22 @@ void Reader::read_init_cmd(InitCmd& cmd, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_coe(CoeProtocol& coe, const pugi::xml_node n) {
-    coe.pos = pos_of(n);
+// A protocol element with InitCmds (CoE, EoE, SoE, AoE): its flags, what `attribute` takes
+// (true when it read the attribute), and its InitCmds; anything else is kept verbatim.
+template <class Protocol, std::size_t N, class Attribute>
+void Reader::read_protocol(Protocol& p, const pugi::xml_node n, const MailboxFlag<Protocol> (&flags)[N], Attribute&& attribute) {
+    p.pos = pos_of(n);
     for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
+        if (attribute(a)) continue;
         const std::string_view an = a.name();
-        if (is(an, "SdoInfo")) coe.sdo_info = boolean(a, n);
-        else if (is(an, "PdoAssign")) coe.pdo_assign = boolean(a, n);
-        else if (is(an, "PdoConfig")) coe.pdo_config = boolean(a, n);
-        else if (is(an, "PdoUpload")) coe.pdo_upload = boolean(a, n);
-        else if (is(an, "CompleteAccess")) coe.complete_access = boolean(a, n);
-        else if (is(an, "SegmentedSdo")) coe.segmented_sdo = boolean(a, n);
-        else if (is(an, "DiagHistory")) coe.diag_history = boolean(a, n);
-        else if (is(an, "SdoUploadWithMaxLength")) coe.sdo_upload_with_max_length = boolean(a, n);
-        else if (is(an, "TimeDistribution")) coe.time_distribution = boolean(a, n);
-        else if (is(an, "ModuleOD")) coe.module_od = boolean(a, n);
-        else if (is(an, "EdsFile")) coe.eds_file = a.value();
-        else if (is(an, "DS402Channels")) coe.ds402_channels = i32(a, n);
-        else keep(coe.extras, a);
+        const auto flag = std::find_if(std::begin(flags), std::end(flags), [&](const auto& f) { return f.attribute == an; });
+        if (flag != std::end(flags)) p.*(flag->field) = boolean(a, n);
+        else keep(p.extras, a);
     }
-    reserve_for(coe.init_cmds, n, "InitCmd");
+    reserve_for(p.init_cmds, n, "InitCmd");
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
-        if (is(name, "InitCmd")) read_init_cmd(coe.init_cmds.emplace_back(), c);
-        else keep(coe.extras, c, previous);
+        if (is(name, "InitCmd")) read_init_cmd(p.init_cmds.emplace_back(), c);
+        else keep(p.extras, c, previous);
     });
 }
 
@@ -68,51 +69,25 @@ void Reader::read_mailbox(Mailbox& m, const pugi::xml_node n) {
     }
     for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
         if (is(name, "CoE")) {
-            read_coe(m.coe.emplace(), c);
+            CoeProtocol& coe = m.coe.emplace();
+            read_protocol(coe, c, coe_flags, [&](const pugi::xml_attribute a) {
+                const std::string_view an = a.name();
+                if (is(an, "EdsFile")) coe.eds_file = a.value();
+                else if (is(an, "DS402Channels")) coe.ds402_channels = i32(a, c);
+                else return false;
+                return true;
+            });
         } else if (is(name, "EoE")) {
-            EoeProtocol eoe;
-            eoe.pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "IP")) eoe.ip = boolean(a, c);
-                else if (is(an, "MAC")) eoe.mac = boolean(a, c);
-                else if (is(an, "TimeStamp")) eoe.time_stamp = boolean(a, c);
-                else keep(eoe.extras, a);
-            }
-            for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (is(cn, "InitCmd")) read_init_cmd(eoe.init_cmds.emplace_back(), cc);
-                else keep(eoe.extras, cc, prev);
-            });
-            m.eoe = std::move(eoe);
+            read_protocol(m.eoe.emplace(), c, eoe_flags, no_other_attribute);
         } else if (is(name, "SoE")) {
-            SoeProtocol soe;
-            soe.pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "ChannelCount")) soe.channel_count = i32(a, c);
-                else if (is(an, "DriveFollowsBit3Support")) soe.drive_follows_bit3_support = boolean(a, c);
-                else keep(soe.extras, a);
-            }
-            for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (is(cn, "InitCmd")) read_init_cmd(soe.init_cmds.emplace_back(), cc);
-                else keep(soe.extras, cc, prev);
+            SoeProtocol& soe = m.soe.emplace();
+            read_protocol(soe, c, soe_flags, [&](const pugi::xml_attribute a) {
+                if (!is(a.name(), "ChannelCount")) return false;
+                soe.channel_count = i32(a, c);
+                return true;
             });
-            m.soe = std::move(soe);
         } else if (is(name, "AoE")) {
-            AoeProtocol aoe;
-            aoe.pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "AdsRouter")) aoe.ads_router = boolean(a, c);
-                else if (is(an, "GenerateOwnNetId")) aoe.generate_own_net_id = boolean(a, c);
-                else if (is(an, "InitializeOwnNetId")) aoe.initialize_own_net_id = boolean(a, c);
-                else keep(aoe.extras, a);
-            }
-            for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
-                if (is(cn, "InitCmd")) read_init_cmd(aoe.init_cmds.emplace_back(), cc);
-                else keep(aoe.extras, cc, prev);
-            });
-            m.aoe = std::move(aoe);
+            read_protocol(m.aoe.emplace(), c, aoe_flags, no_other_attribute);
         } else if (is(name, "FoE") || is(name, "VoE")) {
             PlainProtocol p;
             p.pos = pos_of(c);

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "esi/derive/object_builder.hpp"
+#include "esi/model/mailbox_flags.hpp"
 #include "esi/text_distance.hpp"
 #include "yaml/extras.hpp"
 #include "yaml/source_parser.hpp"
@@ -290,19 +291,18 @@ std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, 
         }
         return r_.mapping(*n, ctx, key);
     };
+    auto read_flags = [&](const Fields& p, auto& out, const auto& flags) {
+        for (const auto& flag : flags) r_.optional_bool(p, flag.key, out.*flag.field);
+    };
+    // EoE, SoE and AoE: after their typed settings, their InitCmds and unmodelled XML.
+    auto init_cmds_and_xml = [&](const Fields& p, auto& out, MailboxProtocol which) {
+        if (const Node* n = p.find("init")) init_cmds(*n, which, names, out.init_cmds, nullptr);
+        extras(p, "xml", out.extras);
+    };
     if (auto p = protocol("coe", Context::coe)) {
         CoeProtocol coe;
         coe.pos = f->find("coe") ? pos_of(*f->find("coe")) : m.pos;
-        r_.optional_bool(*p, "sdo_info", coe.sdo_info);
-        r_.optional_bool(*p, "pdo_assign", coe.pdo_assign);
-        r_.optional_bool(*p, "pdo_config", coe.pdo_config);
-        r_.optional_bool(*p, "pdo_upload", coe.pdo_upload);
-        r_.optional_bool(*p, "complete_access", coe.complete_access);
-        r_.optional_bool(*p, "segmented_sdo", coe.segmented_sdo);
-        r_.optional_bool(*p, "diag_history", coe.diag_history);
-        r_.optional_bool(*p, "sdo_upload_with_max_length", coe.sdo_upload_with_max_length);
-        r_.optional_bool(*p, "time_distribution", coe.time_distribution);
-        r_.optional_bool(*p, "module_od", coe.module_od);
+        read_flags(*p, coe, coe_flags);
         r_.optional_text(*p, "eds_file", coe.eds_file);
         r_.optional_integer(*p, "ds402_channels", coe.ds402_channels);
         extras(*p, "xml", coe.extras);
@@ -311,30 +311,23 @@ std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, 
     if (auto p = protocol("eoe", Context::eoe)) {
         EoeProtocol eoe;
         eoe.pos = pos_of(*f->find("eoe"));
-        r_.optional_bool(*p, "ip", eoe.ip);
-        r_.optional_bool(*p, "mac", eoe.mac);
-        r_.optional_bool(*p, "time_stamp", eoe.time_stamp);
-        if (const Node* n = p->find("init")) init_cmds(*n, MailboxProtocol::eoe, names, eoe.init_cmds, nullptr);
-        extras(*p, "xml", eoe.extras);
+        read_flags(*p, eoe, eoe_flags);
+        init_cmds_and_xml(*p, eoe, MailboxProtocol::eoe);
         m.eoe = std::move(eoe);
     }
     if (auto p = protocol("soe", Context::soe)) {
         SoeProtocol soe;
         soe.pos = pos_of(*f->find("soe"));
         r_.optional_integer(*p, "channel_count", soe.channel_count);
-        r_.optional_bool(*p, "drive_follows_bit3_support", soe.drive_follows_bit3_support);
-        if (const Node* n = p->find("init")) init_cmds(*n, MailboxProtocol::soe, names, soe.init_cmds, nullptr);
-        extras(*p, "xml", soe.extras);
+        read_flags(*p, soe, soe_flags);
+        init_cmds_and_xml(*p, soe, MailboxProtocol::soe);
         m.soe = std::move(soe);
     }
     if (auto p = protocol("aoe", Context::aoe)) {
         AoeProtocol aoe;
         aoe.pos = pos_of(*f->find("aoe"));
-        r_.optional_bool(*p, "ads_router", aoe.ads_router);
-        r_.optional_bool(*p, "generate_own_net_id", aoe.generate_own_net_id);
-        r_.optional_bool(*p, "initialize_own_net_id", aoe.initialize_own_net_id);
-        if (const Node* n = p->find("init")) init_cmds(*n, MailboxProtocol::aoe, names, aoe.init_cmds, nullptr);
-        extras(*p, "xml", aoe.extras);
+        read_flags(*p, aoe, aoe_flags);
+        init_cmds_and_xml(*p, aoe, MailboxProtocol::aoe);
         m.aoe = std::move(aoe);
     }
     for (const char* key : {"foe", "voe"}) {
