@@ -11,6 +11,7 @@
 
 #include "esi/derive/typed_value.hpp"
 #include "esi/model/object_layout.hpp"
+#include "esi/xml_text.hpp"
 
 namespace esi::yaml {
 
@@ -36,44 +37,17 @@ std::string language_key(std::uint32_t lcid) {
     return std::to_string(lcid);
 }
 
-std::string xml_escape(std::string_view s, bool attribute) {
-    std::string out;
-    out.reserve(s.size());
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"':
-                if (attribute) out += "&quot;";
-                else out += c;
-                break;
-            case '\n':
-                if (attribute) out += "&#10;";
-                else out += c;
-                break;
-            case '\r': out += "&#13;"; break;
-            case '\t':
-                if (attribute) out += "&#9;";
-                else out += c;
-                break;
-            default: out += c;
-        }
-    }
-    return out;
-}
-
 // An unmodelled element back to XML text; character data first, then the children (the model
 // keeps the element's text as one string).
 void xml_text(const XmlElement& e, std::string& out) {
     out += "<" + e.name;
-    for (const auto& a : e.attributes) out += " " + a.name + "=\"" + xml_escape(a.value, true) + "\"";
+    for (const auto& a : e.attributes) out += " " + a.name + "=\"" + xml_escaped(a.value, XmlTextKind::attribute_value) + "\"";
     if (e.text.empty() && e.children.empty()) {
         out += "/>";
         return;
     }
     out += ">";
-    out += xml_escape(e.text, false);
+    append_xml_escaped(out, e.text, XmlTextKind::character_data);
     for (const auto& c : e.children) xml_text(c, out);
     out += "</" + e.name + ">";
 }
