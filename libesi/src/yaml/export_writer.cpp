@@ -10,6 +10,7 @@
 #include <set>
 
 #include "esi/derive/typed_value.hpp"
+#include "esi/model/language.hpp"
 #include "esi/model/object_layout.hpp"
 #include "esi/xml_text.hpp"
 
@@ -25,15 +26,9 @@ std::string hex_text(std::uint64_t v, int digits) {
 
 std::string num(const Number& n) { return format_decimal(n); }
 
-// The language codes the parser knows (yaml_reader.cpp); any other LcId is written as a number.
+// The language codes the parser knows (esi/model/language.hpp); any other LcId is written as a number.
 std::string language_key(std::uint32_t lcid) {
-    static const std::pair<std::uint32_t, const char*> codes[] = {
-        {1033, "en"}, {1031, "de"}, {1036, "fr"}, {1040, "it"}, {1034, "es"}, {1041, "ja"}, {2052, "zh"}, {1042, "ko"},
-        {1049, "ru"}, {1045, "pl"}, {1043, "nl"}, {1053, "sv"}, {1030, "da"}, {1035, "fi"}, {2070, "pt"}, {1029, "cs"},
-        {1055, "tr"}, {1038, "hu"}, {1044, "nb"}, {2057, "en-GB"}, {3079, "de-AT"}, {2055, "de-CH"}, {1028, "zh-TW"},
-        {1046, "pt-BR"}};
-    for (const auto& [id, code] : codes)
-        if (id == lcid) return code;
+    if (const auto code = language_of_lcid(lcid)) return std::string(*code);
     return std::to_string(lcid);
 }
 
@@ -135,7 +130,7 @@ void ExportWriter::names(YNode& map, std::string_view key, const Names& ns, cons
         if (!n.lcid) {
             warn(child(path, std::string(key)), "a text without LcId next to others cannot be expressed; written as LcId 1033");
         }
-        const std::uint32_t lcid = n.lcid.value_or(1033);
+        const std::uint32_t lcid = n.lcid.value_or(default_lcid);
         if (!seen.insert(lcid).second) {
             warn(child(path, std::string(key)), "LcId " + std::to_string(lcid) + " twice; the second is dropped");
             continue;
