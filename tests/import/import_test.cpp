@@ -221,3 +221,28 @@ TEST(ImportOutput, EveryYamlSampleRoundTrips) {
 }
 
 }  // namespace
+
+// The `xml` escape hatch holds XML text: a C0 control or invalid UTF-8 in unmodelled XML becomes
+// U+FFFD there, as in the ESI writer (esi/xml_text.hpp), so the fragment is well-formed XML 1.0
+// and the YAML holds no escaped control character; an invalid byte does not turn into the Latin-1
+// character of the same number on the way back.
+TEST(ImportEscapeHatch, ControlCharactersAndInvalidUtf8BecomeReplacementCharacters) {
+    EsiDocument doc = load_sample("digital-io-8.yaml");
+    esi::XmlElement element;
+    element.name = "Remark";
+    element.attributes.push_back({"x", "a\x01" "b\xFF"});
+    element.text = "t\x02" "ext\xC3";
+    doc.infos.at(0).vendor->extras.elements.push_back(element);
+
+    const ImportResult imported = import_device_source(doc);
+    ASSERT_TRUE(imported.yaml) << diagnostics_text(imported.diagnostics);
+    for (const char* escape : {"\\x01", "\\x02", "\\xFF", "\\xC3"})
+        EXPECT_EQ(imported.yaml->find(escape), std::string::npos) << escape << "\n" << *imported.yaml;
+    const esi::DeviceSource loaded = esi::load_device_source(*imported.yaml, "imported.yaml");
+    ASSERT_TRUE(loaded.document) << diagnostics_text(loaded.diagnostics);
+    const auto& elements = loaded.document->infos.at(0).vendor->extras.elements;
+    ASSERT_EQ(elements.size(), 1u);
+    const std::string r = "\xEF\xBF\xBD";  // U+FFFD
+    EXPECT_EQ(elements[0].attributes.at(0).value, "a" + r + "b" + r);
+    EXPECT_EQ(elements[0].text, "t" + r + "ext" + r);
+}

@@ -266,3 +266,43 @@ TEST(Reader, SwapDataIsTheSchemaEnumerationAsWritten) {
     EXPECT_TRUE(r.diagnostics.empty());
     EXPECT_EQ(r.document->infos[0].devices[0].rx_pdos[0].entries[0].data_type_swap_data, "Swap_HB_LB");
 }
+
+// DependOnSlot/DependOnSlotGroup are read the same way wherever the schema allows them: the
+// Index of a PDO, of a PDO entry, of an InitCmd and of an Object, and a PDO's Exclude.
+TEST(Reader, DependOnSlotIsReadOnEveryIndexThatCarriesIt) {
+    const auto r = read(R"(<EtherCATInfo><Descriptions><Devices><Device><Type/>
+<TxPdo><Index DependOnSlot="1" DependOnSlotGroup="0" Other="x">#x1A00</Index><Exclude DependOnSlotGroup="true">#x1A01</Exclude>
+  <Entry><Index DependOnSlot="true">#x6000</Index><BitLen>1</BitLen></Entry></TxPdo>
+<Mailbox><CoE><InitCmd><Transition>PS</Transition><Index DependOnSlotGroup="1">#x8000</Index><Data>01</Data></InitCmd></CoE></Mailbox>
+<Profile><Dictionary><Objects><Object><Index OverwrittenByModule="1" DependOnSlot="0">#x6000</Index></Object></Objects></Dictionary></Profile>
+</Device></Devices></Descriptions></EtherCATInfo>)");
+    ASSERT_TRUE(r.document);
+    EXPECT_TRUE(r.diagnostics.empty()) << r.diagnostics.items()[0].message;
+    const auto& d = r.document->infos.at(0).devices.at(0);
+    const auto& pdo = d.tx_pdos.at(0);
+    EXPECT_EQ(pdo.index_depend_on_slot, true);
+    EXPECT_EQ(pdo.index_depend_on_slot_group, false);
+    EXPECT_TRUE(pdo.extras.attributes.empty());  // attributes of Index other than these are not kept
+    EXPECT_EQ(pdo.excludes.at(0).depend_on_slot, std::nullopt);
+    EXPECT_EQ(pdo.excludes.at(0).depend_on_slot_group, true);
+    EXPECT_EQ(pdo.entries.at(0).index_depend_on_slot, true);
+    EXPECT_EQ(pdo.entries.at(0).index_depend_on_slot_group, std::nullopt);
+    const auto& cmd = d.mailbox->coe->init_cmds.at(0);
+    EXPECT_EQ(cmd.index_depend_on_slot, std::nullopt);
+    EXPECT_EQ(cmd.index_depend_on_slot_group, true);
+    const auto& object = d.dictionary()->objects.at(0);
+    EXPECT_EQ(object.index_depend_on_slot, false);
+    EXPECT_EQ(object.index_overwritten_by_module, true);
+}
+
+TEST(Reader, BadDependOnSlotIsReportedAtItsIndex) {
+    const auto r = read("<EtherCATInfo><Descriptions><Devices><Device><Type/>\n"
+                        "<RxPdo><Index>#x1600</Index>\n<Exclude DependOnSlot=\"maybe\">#x1601</Exclude></RxPdo>\n"
+                        "</Device></Devices></Descriptions></EtherCATInfo>");
+    ASSERT_TRUE(r.document);
+    const auto* d = find(r, "xml-boolean-format");
+    ASSERT_NE(d, nullptr);
+    EXPECT_EQ(d->pos.line, 3u);
+    EXPECT_NE(d->message.find("Exclude@DependOnSlot"), std::string::npos) << d->message;
+    EXPECT_EQ(r.document->infos[0].devices[0].rx_pdos[0].excludes.at(0).depend_on_slot, std::nullopt);
+}

@@ -1,4 +1,5 @@
-// The XML text emitter: escaping, repair of what XML cannot carry, layout, number spelling.
+// The XML text emitter: repair of what XML cannot carry, layout, number spelling. The escaping
+// itself is tested in unit/xml_text_test.cpp.
 
 #include <gtest/gtest.h>
 
@@ -8,53 +9,9 @@
 
 namespace {
 
-using esi::xml_writer::append_escaped;
 using esi::xml_writer::is_xml_name;
 using esi::xml_writer::NumberText;
 using esi::xml_writer::XmlEmitter;
-
-std::string escaped(std::string_view text, bool attribute) {
-    std::string out;
-    append_escaped(out, text, attribute);
-    return out;
-}
-
-TEST(Emitter, EscapesMarkupInText) {
-    EXPECT_EQ(escaped("a & b < c > d \"q\" 'x'", false), "a &amp; b &lt; c &gt; d \"q\" 'x'");
-    EXPECT_EQ(escaped("]]>", false), "]]&gt;");
-}
-
-TEST(Emitter, EscapesQuotesAndLayoutCharactersInAttributes) {
-    EXPECT_EQ(escaped("say \"hi\" & <go>", true), "say &quot;hi&quot; &amp; &lt;go&gt;");
-    // Attribute-value normalisation would turn these into spaces.
-    EXPECT_EQ(escaped("a\tb\nc\rd", true), "a&#9;b&#10;c&#13;d");
-}
-
-TEST(Emitter, KeepsTabAndNewlineInTextButProtectsCarriageReturn) {
-    EXPECT_EQ(escaped("line 1\n\tline 2\r\n", false), "line 1\n\tline 2&#13;\n");
-}
-
-TEST(Emitter, ReplacesControlCharactersXmlCannotCarry) {
-    EXPECT_EQ(escaped(std::string("a\x01" "b\x1F" "c", 5), false), "a\xEF\xBF\xBD" "b\xEF\xBF\xBD" "c");
-    EXPECT_EQ(escaped(std::string("a\0b", 3), true), "a\xEF\xBF\xBD" "b");
-}
-
-TEST(Emitter, KeepsValidUtf8) {
-    const std::string text = "Gr\xC3\xB6\xC3\x9F" "e \xE2\x82\xAC \xF0\x9F\x94\x8C \xE4\xB8\xAD";  // Größe € 🔌 中
-    EXPECT_EQ(escaped(text, false), text);
-    EXPECT_EQ(escaped(text, true), text);
-}
-
-TEST(Emitter, ReplacesInvalidUtf8) {
-    EXPECT_EQ(escaped("\xFF", false), "\xEF\xBF\xBD");                     // not a lead byte
-    EXPECT_EQ(escaped("a\xC3", false), "a\xEF\xBF\xBD");                   // truncated sequence
-    EXPECT_EQ(escaped("\xC0\xAF", false), "\xEF\xBF\xBD\xEF\xBF\xBD");     // overlong '/'
-    EXPECT_EQ(escaped("\xED\xA0\x80", false), "\xEF\xBF\xBD\xEF\xBF\xBD\xEF\xBF\xBD");  // surrogate
-    EXPECT_EQ(escaped("\xF4\x90\x80\x80", false).substr(0, 3), "\xEF\xBF\xBD");         // above U+10FFFF
-    EXPECT_EQ(escaped("\xEF\xBF\xBE", false).substr(0, 3), "\xEF\xBF\xBD");             // U+FFFE
-    // ISO-8859-1 text that was never decoded: each stray byte is replaced, the rest kept.
-    EXPECT_EQ(escaped("Gr\xF6\xDF" "e", false), "Gr\xEF\xBF\xBD\xEF\xBF\xBD" "e");
-}
 
 TEST(Emitter, RecognisesXmlNames) {
     EXPECT_TRUE(is_xml_name("VendorSpecific"));

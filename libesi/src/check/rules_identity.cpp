@@ -9,6 +9,7 @@
 #include "check/areas.hpp"
 #include "check/queries.hpp"
 #include "check/rule_cache.hpp"
+#include "esi/model/language.hpp"
 #include "esi/number.hpp"
 #include "esi/text_distance.hpp"
 
@@ -422,9 +423,9 @@ void check_names_lcid(const Names& names, std::string_view owner, RuleContext& c
     if (names.size() < 2) return;
     // Names are few (one per language); a quadratic look is linear in practice.
     for (std::size_t i = 1; i < names.size(); ++i) {
-        const std::uint32_t lcid = names[i].lcid.value_or(1033);
+        const std::uint32_t lcid = names[i].lcid.value_or(default_lcid);
         for (std::size_t j = 0; j < i; ++j) {
-            if (names[j].lcid.value_or(1033) != lcid) continue;
+            if (names[j].lcid.value_or(default_lcid) != lcid) continue;
             context.report(names[i].pos,
                            std::string(owner) + " has a second Name for LcId " + std::to_string(lcid) +
                                (names[i].lcid ? "" : " (a Name without LcId means 1033)") + ": '" + names[i].text +

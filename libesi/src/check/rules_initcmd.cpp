@@ -12,21 +12,9 @@ namespace esi::rules {
 
 namespace {
 
-enum class Protocol { coe, soe, eoe, aoe };
-
-std::string_view protocol_name(Protocol p) {
-    switch (p) {
-        case Protocol::coe: return "CoE";
-        case Protocol::soe: return "SoE";
-        case Protocol::eoe: return "EoE";
-        case Protocol::aoe: return "AoE";
-    }
-    return "";
-}
-
 struct InitCmdSite {
     const InitCmd* cmd;
-    Protocol protocol;
+    MailboxProtocol protocol;
     const Dictionary* dictionary;  // the dictionary CoE targets live in; null when unknown
 };
 
@@ -35,14 +23,9 @@ struct InitCmdSite {
 template <class F>
 void for_each_init_cmd(const EsiDocument& document, F&& f) {
     auto visit = [&](const Mailbox& mailbox, const Dictionary* dictionary) {
-        if (mailbox.coe)
-            for (const auto& c : mailbox.coe->init_cmds) f(InitCmdSite{&c, Protocol::coe, dictionary});
-        if (mailbox.soe)
-            for (const auto& c : mailbox.soe->init_cmds) f(InitCmdSite{&c, Protocol::soe, nullptr});
-        if (mailbox.eoe)
-            for (const auto& c : mailbox.eoe->init_cmds) f(InitCmdSite{&c, Protocol::eoe, nullptr});
-        if (mailbox.aoe)
-            for (const auto& c : mailbox.aoe->init_cmds) f(InitCmdSite{&c, Protocol::aoe, nullptr});
+        mailbox.for_each_init_cmd([&](MailboxProtocol protocol, const InitCmd& c) {
+            f(InitCmdSite{&c, protocol, protocol == MailboxProtocol::coe ? dictionary : nullptr});
+        });
     };
     for (const auto& info : document.infos) {
         for (const auto& device : info.devices)
@@ -69,7 +52,7 @@ bool contains(std::span<const std::string_view> list, std::string_view value) {
 }
 
 std::string describe(const InitCmdSite& site) {
-    std::string text = std::string(protocol_name(site.protocol)) + " InitCmd";
+    std::string text = std::string(to_string(site.protocol)) + " InitCmd";
     if (site.cmd->index) {
         text += " " + format_hex(*site.cmd->index, 4);
         if (site.cmd->subindex) text += ":" + std::to_string(*site.cmd->subindex);
@@ -220,7 +203,7 @@ constexpr Rule initcmd_data_hex{
 template <class F>
 void for_each_coe_target(const EsiDocument& document, RuleContext& context, F&& f) {
     for_each_init_cmd(document, [&](const InitCmdSite& site) {
-        if (site.protocol != Protocol::coe || !site.dictionary || !site.cmd->index) return;
+        if (site.protocol != MailboxProtocol::coe || !site.dictionary || !site.cmd->index) return;
         if ((site.cmd->index_depend_on_slot && *site.cmd->index_depend_on_slot) ||
             (site.cmd->index_depend_on_slot_group && *site.cmd->index_depend_on_slot_group))
             return;

@@ -166,16 +166,9 @@ ViewValue mailbox_view(const Device& device, ViewArena& arena) {
     }
 
     ListBuilder init_cmds(arena);
-    if (mb) {
-        if (mb->coe)
-            for (const auto& cmd : mb->coe->init_cmds) init_cmds.add(init_cmd_view(cmd, "CoE", arena));
-        if (mb->soe)
-            for (const auto& cmd : mb->soe->init_cmds) init_cmds.add(init_cmd_view(cmd, "SoE", arena));
-        if (mb->eoe)
-            for (const auto& cmd : mb->eoe->init_cmds) init_cmds.add(init_cmd_view(cmd, "EoE", arena));
-        if (mb->aoe)
-            for (const auto& cmd : mb->aoe->init_cmds) init_cmds.add(init_cmd_view(cmd, "AoE", arena));
-    }
+    if (mb)
+        mb->for_each_init_cmd(
+            [&](MailboxProtocol protocol, const InitCmd& cmd) { init_cmds.add(init_cmd_view(cmd, to_string(protocol), arena)); });
     j.add("init_cmds", init_cmds.finish());
 
     // Eeprom/BootStrap: bootstrap mailbox out offset, out size, in offset, in size (little-endian

@@ -11,22 +11,23 @@
 #include <fmt/format.h>
 
 #include "diff/compare.hpp"
+#include "esi/model/mailbox_flags.hpp"
 #include "diff/sequence.hpp"
 
 namespace esi::diff_detail {
 
 namespace {
 
-enum class Protocol { coe, soe, eoe, aoe };
-
-std::string init_cmd_key(const InitCmd& c, Protocol protocol) {
+std::string init_cmd_key(const InitCmd& c, MailboxProtocol protocol) {
     switch (protocol) {
-        case Protocol::coe: return entry_key(c.index.value_or(0), c.subindex.value_or(0));
-        case Protocol::soe:
+        case MailboxProtocol::coe: return entry_key(c.index.value_or(0), c.subindex.value_or(0));
+        case MailboxProtocol::soe:
             return c.channel ? fmt::format("IDN {} Chn {}", c.idn.value_or(0), *c.channel)
                              : fmt::format("IDN {}", c.idn.value_or(0));
-        case Protocol::eoe: return fmt::format("Type {}", c.type.value_or(0));
-        case Protocol::aoe: return "AoE";
+        case MailboxProtocol::eoe: return fmt::format("Type {}", c.type.value_or(0));
+        case MailboxProtocol::aoe: return "AoE";
+        case MailboxProtocol::foe:
+        case MailboxProtocol::voe: break;  // no InitCmds
     }
     return {};
 }
@@ -40,8 +41,8 @@ std::string transitions(const InitCmd& c) {
     return out;
 }
 
-std::string describe_init_cmd(const InitCmd& c, Protocol protocol) {
-    std::string out = protocol == Protocol::aoe ? std::string("AoE command") : init_cmd_key(c, protocol);
+std::string describe_init_cmd(const InitCmd& c, MailboxProtocol protocol) {
+    std::string out = protocol == MailboxProtocol::aoe ? std::string("AoE command") : init_cmd_key(c, protocol);
     out += fmt::format(" [{}]", transitions(c));
     if (c.has_data) out += " data " + (c.data.text.empty() ? std::string("(empty)") : normalized_hex(c.data));
     return out;
@@ -68,18 +69,18 @@ void compare_init_cmd(Recorder& r, const std::string& p, const InitCmd& a, const
     compare_extras(r, p, a.extras, b.extras, a.pos, b.pos);
 }
 
-void compare_init_cmds(Recorder& r, const std::string& path, Protocol protocol, const std::vector<InitCmd>& a,
+void compare_init_cmds(Recorder& r, const std::string& path, MailboxProtocol protocol, const std::vector<InitCmd>& a,
                        const std::vector<InitCmd>& b, SourcePos old_parent, SourcePos new_parent) {
     std::vector<std::string> ka;
     std::vector<std::string> kb;
     for (const auto& c : a) ka.push_back(init_cmd_key(c, protocol));
     for (const auto& c : b) kb.push_back(init_cmd_key(c, protocol));
     const Alignment alignment = align(
-        ka, kb, [&](const std::string&) { return protocol != Protocol::aoe; }, true);
+        ka, kb, [&](const std::string&) { return protocol != MailboxProtocol::aoe; }, true);
 
     // "InitCmd[#x1C12:00]", the second command with that key "InitCmd[#x1C12:00#2]"; AoE by position.
     auto path_of = [&](const std::vector<std::string>& keys, std::size_t i) -> std::string {
-        if (protocol == Protocol::aoe) return child(path, indexed("InitCmd", std::to_string(i + 1)));
+        if (protocol == MailboxProtocol::aoe) return child(path, indexed("InitCmd", std::to_string(i + 1)));
         const std::size_t occurrence =
             static_cast<std::size_t>(std::count(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(i), keys[i]));
         return child(path, indexed("InitCmd", occurrence ? fmt::format("{}#{}", keys[i], occurrence + 1) : keys[i]));
@@ -120,6 +121,12 @@ void capability(Recorder& r, const std::string& path, std::string_view name, con
             pb);
 }
 
+template <class Protocol, std::size_t N>
+void capabilities(Recorder& r, const std::string& path, const Protocol& a, const Protocol& b,
+                  const MailboxFlag<Protocol> (&flags)[N]) {
+    for (const auto& flag : flags) capability(r, path, flag.attribute, a.*flag.field, b.*flag.field, a.pos, b.pos);
+}
+
 // Presence of a protocol element; returns whether both are present (and their contents should be compared).
 template <class P>
 bool presence(Recorder& r, const std::string& p, std::string_view name, const std::optional<P>& a, const std::optional<P>& b,
@@ -141,11 +148,7 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (!a && !b) return;
     if (!a || !b) {
         const Mailbox& m = a ? *a : *b;
-        std::string protocols;
-        for (const auto& [bit, name] :
-             {std::pair{0x01, "AoE"}, {0x02, "EoE"}, {0x04, "CoE"}, {0x08, "FoE"}, {0x10, "SoE"}, {0x20, "VoE"}})
-            if (m.protocol_bits() & bit) protocols += (protocols.empty() ? "" : " ") + std::string(name);
-        if (protocols.empty()) protocols = "(no protocol)";
+        const std::string protocols = mailbox_protocol_names(m.protocol_bits(), "(no protocol)");
         r.add(a ? ChangeKind::mailbox_removed : ChangeKind::mailbox_added, path,
               a ? std::optional<std::string>(protocols) : std::nullopt, b ? std::optional<std::string>(protocols) : std::nullopt,
               a ? a->pos : old_parent, b ? b->pos : new_parent,
@@ -155,7 +158,7 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
         const Mailbox& x = a ? *a : empty;
         const Mailbox& y = b ? *b : empty;
         if (x.coe || y.coe)
-            compare_init_cmds(r, child(path, "CoE"), Protocol::coe, x.coe ? x.coe->init_cmds : std::vector<InitCmd>{},
+            compare_init_cmds(r, child(path, "CoE"), MailboxProtocol::coe, x.coe ? x.coe->init_cmds : std::vector<InitCmd>{},
                               y.coe ? y.coe->init_cmds : std::vector<InitCmd>{}, old_parent, new_parent);
         return;
     }
@@ -168,26 +171,22 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (presence(r, coe, "CoE", x.coe, y.coe, x.pos, y.pos)) {
         const CoeProtocol& c = *x.coe;
         const CoeProtocol& d = *y.coe;
-        capability(r, coe, "SdoInfo", c.sdo_info, d.sdo_info, c.pos, d.pos);
-        capability(r, coe, "PdoAssign", c.pdo_assign, d.pdo_assign, c.pos, d.pos);
-        capability(r, coe, "PdoConfig", c.pdo_config, d.pdo_config, c.pos, d.pos);
-        // PdoUpload (SII General CoE details bit 4, "upload at startup") asks the master to read the
-        // PDO configuration at start-up: an instruction, not a capability a configuration relies on.
-        r.value(ChangeKind::mailbox_attribute_changed, attr(coe, "PdoUpload"), "PdoUpload", flag(c.pdo_upload),
-                flag(d.pdo_upload), c.pos, d.pos);
-        capability(r, coe, "CompleteAccess", c.complete_access, d.complete_access, c.pos, d.pos);
-        capability(r, coe, "SegmentedSdo", c.segmented_sdo, d.segmented_sdo, c.pos, d.pos);
-        capability(r, coe, "DiagHistory", c.diag_history, d.diag_history, c.pos, d.pos);
-        capability(r, coe, "SdoUploadWithMaxLength", c.sdo_upload_with_max_length, d.sdo_upload_with_max_length, c.pos, d.pos);
-        capability(r, coe, "TimeDistribution", c.time_distribution, d.time_distribution, c.pos, d.pos);
-        capability(r, coe, "ModuleOD", c.module_od, d.module_od, c.pos, d.pos);
+        for (const auto& f : coe_flags) {
+            // PdoUpload (SII General CoE details bit 4, "upload at startup") asks the master to read the
+            // PDO configuration at start-up: an instruction, not a capability a configuration relies on.
+            if (f.field == &CoeProtocol::pdo_upload)
+                r.value(ChangeKind::mailbox_attribute_changed, attr(coe, f.attribute), f.attribute, flag(c.*f.field),
+                        flag(d.*f.field), c.pos, d.pos);
+            else
+                capability(r, coe, f.attribute, c.*f.field, d.*f.field, c.pos, d.pos);
+        }
         r.value(ChangeKind::mailbox_channels_changed, attr(coe, "DS402Channels"), "DS402Channels", dec(c.ds402_channels),
                 dec(d.ds402_channels), c.pos, d.pos);
         r.value(ChangeKind::mailbox_attribute_changed, attr(coe, "EdsFile"), "EdsFile", c.eds_file, d.eds_file, c.pos, d.pos);
-        compare_init_cmds(r, coe, Protocol::coe, c.init_cmds, d.init_cmds, c.pos, d.pos);
+        compare_init_cmds(r, coe, MailboxProtocol::coe, c.init_cmds, d.init_cmds, c.pos, d.pos);
         compare_extras(r, coe, c.extras, d.extras, c.pos, d.pos);
     } else if (x.coe || y.coe) {
-        compare_init_cmds(r, coe, Protocol::coe, x.coe ? x.coe->init_cmds : std::vector<InitCmd>{},
+        compare_init_cmds(r, coe, MailboxProtocol::coe, x.coe ? x.coe->init_cmds : std::vector<InitCmd>{},
                           y.coe ? y.coe->init_cmds : std::vector<InitCmd>{}, x.coe ? x.coe->pos : x.pos,
                           y.coe ? y.coe->pos : y.pos);
     }
@@ -196,10 +195,8 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (presence(r, eoe, "EoE", x.eoe, y.eoe, x.pos, y.pos)) {
         const EoeProtocol& c = *x.eoe;
         const EoeProtocol& d = *y.eoe;
-        capability(r, eoe, "IP", c.ip, d.ip, c.pos, d.pos);
-        capability(r, eoe, "MAC", c.mac, d.mac, c.pos, d.pos);
-        capability(r, eoe, "TimeStamp", c.time_stamp, d.time_stamp, c.pos, d.pos);
-        compare_init_cmds(r, eoe, Protocol::eoe, c.init_cmds, d.init_cmds, c.pos, d.pos);
+        capabilities(r, eoe, c, d, eoe_flags);
+        compare_init_cmds(r, eoe, MailboxProtocol::eoe, c.init_cmds, d.init_cmds, c.pos, d.pos);
         compare_extras(r, eoe, c.extras, d.extras, c.pos, d.pos);
     }
 
@@ -209,8 +206,8 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
         const SoeProtocol& d = *y.soe;
         r.value(ChangeKind::mailbox_channels_changed, attr(soe, "ChannelCount"), "ChannelCount", dec(c.channel_count),
                 dec(d.channel_count), c.pos, d.pos);
-        capability(r, soe, "DriveFollowsBit3Support", c.drive_follows_bit3_support, d.drive_follows_bit3_support, c.pos, d.pos);
-        compare_init_cmds(r, soe, Protocol::soe, c.init_cmds, d.init_cmds, c.pos, d.pos);
+        capabilities(r, soe, c, d, soe_flags);
+        compare_init_cmds(r, soe, MailboxProtocol::soe, c.init_cmds, d.init_cmds, c.pos, d.pos);
         compare_extras(r, soe, c.extras, d.extras, c.pos, d.pos);
     }
 
@@ -218,10 +215,8 @@ void compare_mailboxes(Recorder& r, const std::string& path, const std::optional
     if (presence(r, aoe, "AoE", x.aoe, y.aoe, x.pos, y.pos)) {
         const AoeProtocol& c = *x.aoe;
         const AoeProtocol& d = *y.aoe;
-        capability(r, aoe, "AdsRouter", c.ads_router, d.ads_router, c.pos, d.pos);
-        capability(r, aoe, "GenerateOwnNetId", c.generate_own_net_id, d.generate_own_net_id, c.pos, d.pos);
-        capability(r, aoe, "InitializeOwnNetId", c.initialize_own_net_id, d.initialize_own_net_id, c.pos, d.pos);
-        compare_init_cmds(r, aoe, Protocol::aoe, c.init_cmds, d.init_cmds, c.pos, d.pos);
+        capabilities(r, aoe, c, d, aoe_flags);
+        compare_init_cmds(r, aoe, MailboxProtocol::aoe, c.init_cmds, d.init_cmds, c.pos, d.pos);
         compare_extras(r, aoe, c.extras, d.extras, c.pos, d.pos);
     }
 

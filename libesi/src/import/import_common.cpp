@@ -9,62 +9,31 @@
 #include <cstdio>
 #include <set>
 
+#include "esi/model/language.hpp"
+#include "esi/xml_text.hpp"
 #include "import/import_writer.hpp"
 
 namespace esi::import_detail {
 
 namespace {
 
-// The language codes the parser knows (yaml_reader.cpp); any other LcId is written as a number.
+// The language codes the parser knows (esi/model/language.hpp); any other LcId is written as a number.
 std::string language_key(std::uint32_t lcid) {
-    static const std::pair<std::uint32_t, const char*> codes[] = {
-        {1033, "en"}, {1031, "de"}, {1036, "fr"}, {1040, "it"}, {1034, "es"}, {1041, "ja"}, {2052, "zh"}, {1042, "ko"},
-        {1049, "ru"}, {1045, "pl"}, {1043, "nl"}, {1053, "sv"}, {1030, "da"}, {1035, "fi"}, {2070, "pt"}, {1029, "cs"},
-        {1055, "tr"}, {1038, "hu"}, {1044, "nb"}, {2057, "en-GB"}, {3079, "de-AT"}, {2055, "de-CH"}, {1028, "zh-TW"},
-        {1046, "pt-BR"}};
-    for (const auto& [id, code] : codes)
-        if (id == lcid) return code;
+    if (const auto code = language_of_lcid(lcid)) return std::string(*code);
     return std::to_string(lcid);
-}
-
-std::string xml_escape(std::string_view s, bool attribute) {
-    std::string out;
-    out.reserve(s.size());
-    for (char c : s) {
-        switch (c) {
-            case '&': out += "&amp;"; break;
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '"':
-                if (attribute) out += "&quot;";
-                else out += c;
-                break;
-            case '\n':
-                if (attribute) out += "&#10;";
-                else out += c;
-                break;
-            case '\r': out += "&#13;"; break;
-            case '\t':
-                if (attribute) out += "&#9;";
-                else out += c;
-                break;
-            default: out += c;
-        }
-    }
-    return out;
 }
 
 // An unmodelled element back to XML text; character data first, then the children (the model
 // keeps the element's text as one string).
 void xml_text(const XmlElement& e, std::string& out) {
     out += "<" + e.name;
-    for (const auto& a : e.attributes) out += " " + a.name + "=\"" + xml_escape(a.value, true) + "\"";
+    for (const auto& a : e.attributes) out += " " + a.name + "=\"" + xml_escaped(a.value, XmlTextKind::attribute_value) + "\"";
     if (e.text.empty() && e.children.empty()) {
         out += "/>";
         return;
     }
     out += ">";
-    out += xml_escape(e.text, false);
+    append_xml_escaped(out, e.text, XmlTextKind::character_data);
     for (const auto& c : e.children) xml_text(c, out);
     out += "</" + e.name + ">";
 }
@@ -122,7 +91,7 @@ void ImportWriter::names(YNode& map, std::string_view key, const Names& ns, cons
         if (!n.lcid) {
             warn(child(path, std::string(key)), "a text without LcId next to others cannot be expressed; written as LcId 1033");
         }
-        const std::uint32_t lcid = n.lcid.value_or(1033);
+        const std::uint32_t lcid = n.lcid.value_or(default_lcid);
         if (!seen.insert(lcid).second) {
             warn(child(path, std::string(key)), "LcId " + std::to_string(lcid) + " twice; the second is dropped");
             continue;

@@ -128,7 +128,7 @@ YNode ImportWriter::device(const Device& d, const EtherCATInfo& info, const Omit
         if (d.mailbox->coe && !d.mailbox->coe->init_cmds.empty()) {
             YNode list = YNode::seq();
             for (std::size_t i = 0; i < d.mailbox->coe->init_cmds.size(); ++i)
-                list.push(init_cmd(d.mailbox->coe->init_cmds[i], 0, path + "/Mailbox/CoE/InitCmd[" + std::to_string(i + 1) + "]"));
+                list.push(init_cmd(d.mailbox->coe->init_cmds[i], MailboxProtocol::coe, path + "/Mailbox/CoE/InitCmd[" + std::to_string(i + 1) + "]"));
             m.set("init", std::move(list));
         }
     }

@@ -16,20 +16,20 @@ YNode transitions(const std::vector<Transition>& ts) {
 
 }  // namespace
 
-YNode ImportWriter::init_cmd(const InitCmd& c, int protocol, const std::string& path) {
+YNode ImportWriter::init_cmd(const InitCmd& c, MailboxProtocol protocol, const std::string& path) {
     YNode m = YNode::map();
     if (c.transitions.empty()) warn(path, "an InitCmd without Transition cannot be written");
     m.set("transition", transitions(c.transitions));
-    if (protocol == 0) {
+    if (protocol == MailboxProtocol::coe) {
         if (!c.index) warn(path, "a CoE InitCmd without Index cannot be written");
         m.set("object", YNode::hex(c.index.value_or(0), 4));
         if (c.subindex) m.set("subindex", YNode::unsigned_integer(*c.subindex));
     }
-    if (protocol == 1) {
+    if (protocol == MailboxProtocol::soe) {
         if (c.idn) m.set("idn", YNode::integer(*c.idn));
         if (c.channel) m.set("channel", YNode::integer(*c.channel));
     }
-    if (protocol == 2) m.set("type", YNode::integer(c.type.value_or(0)));
+    if (protocol == MailboxProtocol::eoe) m.set("type", YNode::integer(c.type.value_or(0)));
     if (c.has_data) {
         if (valid_hex(c.data)) m.set("data", hex_data(c.data));
         else warn(path + "/Data", "'" + c.data.text + "' is not hex bytes; dropped");
@@ -38,13 +38,13 @@ YNode ImportWriter::init_cmd(const InitCmd& c, int protocol, const std::string& 
         m.set("data", YNode::text(""));
     }
     if (c.comment) m.set("comment", YNode::text(*c.comment));
-    if (protocol == 0 && c.complete_access) m.set("complete_access", YNode::boolean(*c.complete_access));
-    if (protocol <= 1) {
+    if (protocol == MailboxProtocol::coe && c.complete_access) m.set("complete_access", YNode::boolean(*c.complete_access));
+    if (protocol == MailboxProtocol::coe || protocol == MailboxProtocol::soe) {
         if (c.fixed) m.set("fixed", YNode::boolean(*c.fixed));
         if (c.overwritten_by_module) m.set("overwritten_by_module", YNode::boolean(*c.overwritten_by_module));
         if (c.data_adapt_automatically) m.set("adapt_automatically", YNode::boolean(*c.data_adapt_automatically));
     }
-    if (protocol == 0) {
+    if (protocol == MailboxProtocol::coe) {
         if (c.index_depend_on_slot) m.set("index_depend_on_slot", YNode::boolean(*c.index_depend_on_slot));
         if (c.index_depend_on_slot_group) m.set("index_depend_on_slot_group", YNode::boolean(*c.index_depend_on_slot_group));
     }
@@ -84,7 +84,7 @@ YNode ImportWriter::mailbox(const Mailbox& mb, const Device* device, const OmitP
         if (!mb.aoe->init_cmds.empty()) {
             YNode list = YNode::seq();
             for (std::size_t i = 0; i < mb.aoe->init_cmds.size(); ++i)
-                list.push(init_cmd(mb.aoe->init_cmds[i], 3, path + "/AoE/InitCmd[" + std::to_string(i + 1) + "]"));
+                list.push(init_cmd(mb.aoe->init_cmds[i], MailboxProtocol::aoe, path + "/AoE/InitCmd[" + std::to_string(i + 1) + "]"));
             p.set("init", std::move(list));
         }
         set_extras(p, "xml", mb.aoe->extras);
@@ -98,7 +98,7 @@ YNode ImportWriter::mailbox(const Mailbox& mb, const Device* device, const OmitP
         if (!mb.eoe->init_cmds.empty()) {
             YNode list = YNode::seq();
             for (std::size_t i = 0; i < mb.eoe->init_cmds.size(); ++i)
-                list.push(init_cmd(mb.eoe->init_cmds[i], 2, path + "/EoE/InitCmd[" + std::to_string(i + 1) + "]"));
+                list.push(init_cmd(mb.eoe->init_cmds[i], MailboxProtocol::eoe, path + "/EoE/InitCmd[" + std::to_string(i + 1) + "]"));
             p.set("init", std::move(list));
         }
         set_extras(p, "xml", mb.eoe->extras);
@@ -137,7 +137,7 @@ YNode ImportWriter::mailbox(const Mailbox& mb, const Device* device, const OmitP
         if (!mb.soe->init_cmds.empty()) {
             YNode list = YNode::seq();
             for (std::size_t i = 0; i < mb.soe->init_cmds.size(); ++i)
-                list.push(init_cmd(mb.soe->init_cmds[i], 1, path + "/SoE/InitCmd[" + std::to_string(i + 1) + "]"));
+                list.push(init_cmd(mb.soe->init_cmds[i], MailboxProtocol::soe, path + "/SoE/InitCmd[" + std::to_string(i + 1) + "]"));
             p.set("init", std::move(list));
         }
         set_extras(p, "xml", mb.soe->extras);

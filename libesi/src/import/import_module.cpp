@@ -84,7 +84,7 @@ YNode ImportWriter::module(const Module& mo) {
         if (mo.mailbox->coe && !mo.mailbox->coe->init_cmds.empty()) {
             YNode list = YNode::seq();
             for (std::size_t i = 0; i < mo.mailbox->coe->init_cmds.size(); ++i)
-                list.push(init_cmd(mo.mailbox->coe->init_cmds[i], 0, path + "/Mailbox/CoE/InitCmd[" + std::to_string(i + 1) + "]"));
+                list.push(init_cmd(mo.mailbox->coe->init_cmds[i], MailboxProtocol::coe, path + "/Mailbox/CoE/InitCmd[" + std::to_string(i + 1) + "]"));
             m.set("init", std::move(list));
         }
     }

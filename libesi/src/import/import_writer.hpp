@@ -63,7 +63,7 @@ private:
     void info(YNode& map, const ObjectInfo& info, const Dictionary* d, const std::string& type, const std::string& path,
               bool typed_limits);
     YNode mailbox(const Mailbox& m, const Device* device, const OmitPlan& plan, const std::string& path);
-    YNode init_cmd(const InitCmd& c, int protocol, const std::string& path);  // 0 CoE 1 SoE 2 EoE 3 AoE
+    YNode init_cmd(const InitCmd& c, MailboxProtocol protocol, const std::string& path);
     YNode pdo(const Pdo& p, const OmitPlan& plan, const std::string& path);
     YNode pdo_entry(const PdoEntry& e, const OmitPlan& plan, const std::string& path);
     YNode dc(const Dc& dc);

@@ -1,5 +1,6 @@
 #include "esi/model/common.hpp"
 
+#include "esi/model/language.hpp"
 #include "esi/number.hpp"
 
 namespace esi {
@@ -7,7 +8,7 @@ namespace esi {
 const std::string& primary_text(const Names& names) {
     static const std::string empty;
     if (names.empty()) return empty;
-    if (const LocalizedText* english = find_lcid(names, 1033)) return english->text;
+    if (const LocalizedText* english = find_lcid(names, default_lcid)) return english->text;
     for (const auto& n : names)
         if (!n.lcid) return n.text;
     return names.front().text;

@@ -11,15 +11,35 @@ std::uint64_t Pdo::bit_size() const {
     return total;
 }
 
+bool Mailbox::has(MailboxProtocol protocol) const {
+    switch (protocol) {
+        case MailboxProtocol::aoe: return aoe.has_value();
+        case MailboxProtocol::eoe: return eoe.has_value();
+        case MailboxProtocol::coe: return coe.has_value();
+        case MailboxProtocol::foe: return foe.has_value();
+        case MailboxProtocol::soe: return soe.has_value();
+        case MailboxProtocol::voe: return voe.has_value();
+    }
+    return false;
+}
+
 std::uint16_t Mailbox::protocol_bits() const {
     std::uint16_t bits = 0;
-    if (aoe) bits |= 0x01;
-    if (eoe) bits |= 0x02;
-    if (coe) bits |= 0x04;
-    if (foe) bits |= 0x08;
-    if (soe) bits |= 0x10;
-    if (voe) bits |= 0x20;
+    for (const MailboxProtocol protocol : mailbox_protocols)
+        if (has(protocol)) bits |= sii_bit(protocol);
     return bits;
+}
+
+const std::vector<InitCmd>* Mailbox::init_cmds(MailboxProtocol protocol) const {
+    switch (protocol) {
+        case MailboxProtocol::aoe: return aoe ? &aoe->init_cmds : nullptr;
+        case MailboxProtocol::eoe: return eoe ? &eoe->init_cmds : nullptr;
+        case MailboxProtocol::coe: return coe ? &coe->init_cmds : nullptr;
+        case MailboxProtocol::soe: return soe ? &soe->init_cmds : nullptr;
+        case MailboxProtocol::foe:
+        case MailboxProtocol::voe: return nullptr;
+    }
+    return nullptr;
 }
 
 const Object* Dictionary::find_object(std::uint32_t index) const {

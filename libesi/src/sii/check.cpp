@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "esi/model/mailbox_protocol.hpp"
 #include "esi/sii/mapping.hpp"
 #include "esi/sii/text.hpp"
 
@@ -9,15 +10,7 @@ namespace esi::sii {
 
 namespace {
 
-std::string protocol_names(std::uint16_t bits) {
-    static constexpr std::pair<std::uint16_t, std::string_view> names[] = {
-        {mailbox_protocol::aoe, "AoE"}, {mailbox_protocol::eoe, "EoE"}, {mailbox_protocol::coe, "CoE"},
-        {mailbox_protocol::foe, "FoE"}, {mailbox_protocol::soe, "SoE"}, {mailbox_protocol::voe, "VoE"}};
-    std::string out;
-    for (const auto& [bit, name] : names)
-        if (bits & bit) out += out.empty() ? std::string(name) : " " + std::string(name);
-    return out.empty() ? "none" : out;
-}
+std::string protocol_names(std::uint16_t bits) { return mailbox_protocol_names(bits, "none"); }
 
 class Checker {
 public:

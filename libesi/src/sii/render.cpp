@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "esi/data_types.hpp"
+#include "esi/model/mailbox_protocol.hpp"
 #include "esi/sii/text.hpp"
 
 namespace esi::sii {
@@ -12,15 +13,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-std::string protocols(std::uint16_t bits) {
-    static constexpr std::pair<std::uint16_t, std::string_view> names[] = {
-        {mailbox_protocol::aoe, "AoE"}, {mailbox_protocol::eoe, "EoE"}, {mailbox_protocol::coe, "CoE"},
-        {mailbox_protocol::foe, "FoE"}, {mailbox_protocol::soe, "SoE"}, {mailbox_protocol::voe, "VoE"}};
-    std::string out;
-    for (const auto& [bit, name] : names)
-        if (bits & bit) out += (out.empty() ? "" : " ") + std::string(name);
-    return out.empty() ? "none" : out;
-}
+std::string protocols(std::uint16_t bits) { return mailbox_protocol_names(bits, "none"); }
 
 template <typename T, std::size_t N>
 std::string bit_names(T bits, const std::pair<T, std::string_view> (&names)[N]) {

@@ -2,6 +2,7 @@
 // SyncManagers, sync units, PDOs, Mailbox with InitCmds, Dc, Slots and Eeprom; and Module
 // (ModuleType of EtherCATBase.xsd), which shares PDOs and Mailbox with Device.
 
+#include "esi/model/mailbox_flags.hpp"
 #include "xml/writer_model.hpp"
 
 namespace esi::xml_writer {
@@ -231,6 +232,25 @@ void write_plain_protocol(XmlEmitter& out, std::string_view element, const Plain
     out.end();
 }
 
+// A protocol element with InitCmds: `attributes` writes its typed attributes, then come the
+// unknown attributes, the InitCmds and the unknown children placed by `order`.
+template <class Protocol, class Attributes>
+void write_protocol(XmlEmitter& out, std::string_view element, const Protocol& protocol, ChildOrder order,
+                    Attributes&& attributes) {
+    out.begin(element);
+    attributes();
+    write_extra_attributes(out, protocol.extras);
+    ChildPlacer children(out, protocol.extras, order);
+    write_init_cmds(out, children, protocol.init_cmds);
+    children.finish();
+    out.end();
+}
+
+template <class Protocol, class Flags>
+void put_flags(XmlEmitter& out, const Protocol& protocol, const Flags& flags) {
+    for (const auto& flag : flags) put_bool(out, flag.attribute, protocol.*flag.field);
+}
+
 void write_mailbox(XmlEmitter& out, const Mailbox& mailbox) {
     out.begin("Mailbox");
     put_bool(out, "DataLinkLayer", mailbox.data_link_layer);
@@ -239,48 +259,21 @@ void write_mailbox(XmlEmitter& out, const Mailbox& mailbox) {
     ChildPlacer children(out, mailbox.extras, mailbox_order);
     if (const auto& aoe = mailbox.aoe) {
         children.at("AoE");
-        out.begin("AoE");
-        put_bool(out, "AdsRouter", aoe->ads_router);
-        put_bool(out, "GenerateOwnNetId", aoe->generate_own_net_id);
-        put_bool(out, "InitializeOwnNetId", aoe->initialize_own_net_id);
-        write_extra_attributes(out, aoe->extras);
-        ChildPlacer aoe_children(out, aoe->extras, init_cmds_order);
-        write_init_cmds(out, aoe_children, aoe->init_cmds);
-        aoe_children.finish();
-        out.end();
+        write_protocol(out, "AoE", *aoe, init_cmds_order, [&] { put_flags(out, *aoe, aoe_flags); });
     }
     if (const auto& eoe = mailbox.eoe) {
         children.at("EoE");
-        out.begin("EoE");
-        put_bool(out, "IP", eoe->ip);
-        put_bool(out, "MAC", eoe->mac);
-        put_bool(out, "TimeStamp", eoe->time_stamp);
-        write_extra_attributes(out, eoe->extras);
-        ChildPlacer eoe_children(out, eoe->extras, init_cmds_order);
-        write_init_cmds(out, eoe_children, eoe->init_cmds);
-        eoe_children.finish();
-        out.end();
+        write_protocol(out, "EoE", *eoe, init_cmds_order, [&] { put_flags(out, *eoe, eoe_flags); });
     }
     if (const auto& coe = mailbox.coe) {
         children.at("CoE");
-        out.begin("CoE");
-        put_bool(out, "SdoInfo", coe->sdo_info);
-        put_bool(out, "PdoAssign", coe->pdo_assign);
-        put_bool(out, "PdoConfig", coe->pdo_config);
-        put_bool(out, "PdoUpload", coe->pdo_upload);
-        put_bool(out, "CompleteAccess", coe->complete_access);
-        put_text(out, "EdsFile", coe->eds_file);
-        put_decimal(out, "DS402Channels", coe->ds402_channels);
-        put_bool(out, "SegmentedSdo", coe->segmented_sdo);
-        put_bool(out, "DiagHistory", coe->diag_history);
-        put_bool(out, "SdoUploadWithMaxLength", coe->sdo_upload_with_max_length);
-        put_bool(out, "TimeDistribution", coe->time_distribution);
-        put_bool(out, "ModuleOD", coe->module_od);
-        write_extra_attributes(out, coe->extras);
-        ChildPlacer coe_children(out, coe->extras, coe_order);
-        write_init_cmds(out, coe_children, coe->init_cmds);
-        coe_children.finish();
-        out.end();
+        write_protocol(out, "CoE", *coe, coe_order, [&] {
+            const std::span<const MailboxFlag<CoeProtocol>> flags = coe_flags;
+            put_flags(out, *coe, flags.first(coe_flags_before_eds_file));
+            put_text(out, "EdsFile", coe->eds_file);
+            put_decimal(out, "DS402Channels", coe->ds402_channels);
+            put_flags(out, *coe, flags.subspan(coe_flags_before_eds_file));
+        });
     }
     if (mailbox.foe) {
         children.at("FoE");
@@ -288,14 +281,10 @@ void write_mailbox(XmlEmitter& out, const Mailbox& mailbox) {
     }
     if (const auto& soe = mailbox.soe) {
         children.at("SoE");
-        out.begin("SoE");
-        put_decimal(out, "ChannelCount", soe->channel_count);
-        put_bool(out, "DriveFollowsBit3Support", soe->drive_follows_bit3_support);
-        write_extra_attributes(out, soe->extras);
-        ChildPlacer soe_children(out, soe->extras, soe_order);
-        write_init_cmds(out, soe_children, soe->init_cmds);
-        soe_children.finish();
-        out.end();
+        write_protocol(out, "SoE", *soe, soe_order, [&] {
+            put_decimal(out, "ChannelCount", soe->channel_count);
+            put_flags(out, *soe, soe_flags);
+        });
     }
     if (mailbox.voe) {
         children.at("VoE");

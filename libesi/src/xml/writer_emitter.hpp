@@ -3,9 +3,9 @@
 // and end tags to one string buffer, with indentation. It knows XML, not ESI: which elements come
 // in which order is the business of the model mapping (writer.cpp, writer_device.cpp …).
 //
-// Output is always well-formed UTF-8 whatever the strings hold: markup characters are escaped,
-// invalid UTF-8 and characters XML 1.0 cannot carry at all (C0 controls other than tab, LF, CR;
-// U+FFFE, U+FFFF) become U+FFFD, and a repeated attribute name is written once (the first wins).
+// Output is always well-formed UTF-8 whatever the strings hold: text goes through the XML text
+// escaper (esi/xml_text.hpp: markup escaped; invalid UTF-8 and characters XML 1.0 cannot carry
+// become U+FFFD), and a repeated attribute name is written once (the first wins).
 
 #include <charconv>
 #include <cstdint>
@@ -32,10 +32,6 @@ private:
     char buffer_[32] = {};
     std::size_t length_ = 0;
 };
-
-// Appends `text` as XML character data (attribute = false) or as an attribute value in double
-// quotes (attribute = true), escaping and repairing as described above.
-void append_escaped(std::string& out, std::string_view text, bool attribute);
 
 // An XML 1.0 Name as far as ASCII goes (letters, digits, '_', ':', '-', '.'; not starting with a
 // digit, '-' or '.'); bytes >= 0x80 are accepted as name characters.

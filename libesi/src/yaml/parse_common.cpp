@@ -6,6 +6,7 @@
 #include <set>
 
 #include "esi/derive/object_builder.hpp"
+#include "esi/model/mailbox_flags.hpp"
 #include "esi/text_distance.hpp"
 #include "yaml/extras.hpp"
 #include "yaml/source_parser.hpp"
@@ -36,6 +37,19 @@ std::optional<std::uint32_t> padding_bits(std::string_view text) {
     const ParsedNumber n = parse_number(text.substr(3));
     if (!n.ok() || n.value.negative || n.value.magnitude == 0 || n.value.magnitude > 255) return std::nullopt;
     return static_cast<std::uint32_t>(n.value.magnitude);
+}
+
+// The keys an InitCmd of the protocol takes (format_keys.cpp).
+Context init_cmd_context(MailboxProtocol protocol) {
+    switch (protocol) {
+        case MailboxProtocol::coe: return Context::init_coe;
+        case MailboxProtocol::soe: return Context::init_soe;
+        case MailboxProtocol::eoe: return Context::init_eoe;
+        case MailboxProtocol::aoe:
+        case MailboxProtocol::foe:  // FoE and VoE have no InitCmds: never asked
+        case MailboxProtocol::voe: break;
+    }
+    return Context::init_aoe;
 }
 
 }  // namespace
@@ -184,19 +198,19 @@ std::optional<Profile> SourceParser::profile(const Node& node) {
     return p;
 }
 
-void SourceParser::init_cmds(const Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
+void SourceParser::init_cmds(const Node& node, MailboxProtocol protocol, const ObjectNames& names, std::vector<InitCmd>& out,
                              std::vector<InitCmdValue>* values) {
     const auto items = r_.sequence(node, "init");
     if (!items) return;
     for (const auto& item : *items) {
-        const auto f = r_.mapping(item, context, "an InitCmd");
+        const auto f = r_.mapping(item, init_cmd_context(protocol), "an InitCmd");
         if (!f) continue;
         InitCmd cmd;
         cmd.pos = f->pos();
         if (r_.require(*f, "transition", "an InitCmd"))
             if (auto t = transitions(*f->find("transition"))) cmd.transitions = std::move(*t);
         std::optional<SourceValue> value;
-        if (context == Context::init_coe) {
+        if (protocol == MailboxProtocol::coe) {
             std::optional<ObjectRef> ref;
             if (r_.require(*f, "object", "a CoE InitCmd")) ref = object_ref(*f->find("object"), names, "object");
             if (ref) {
@@ -217,11 +231,11 @@ void SourceParser::init_cmds(const Node& node, Context context, const ObjectName
             r_.optional_bool(*f, "index_depend_on_slot", cmd.index_depend_on_slot);
             r_.optional_bool(*f, "index_depend_on_slot_group", cmd.index_depend_on_slot_group);
         }
-        if (context == Context::init_soe) {
+        if (protocol == MailboxProtocol::soe) {
             if (const Node* n = f->find("idn")) cmd.idn = r_.integer<std::int64_t>(*n, "idn", 0, 0xFFFF);
             r_.optional_integer(*f, "channel", cmd.channel);
         }
-        if (context == Context::init_eoe) {
+        if (protocol == MailboxProtocol::eoe) {
             if (r_.require(*f, "type", "an EoE InitCmd")) cmd.type = r_.integer<std::int64_t>(*f->find("type"), "type", INT32_MIN, INT32_MAX);
         }
         if (const Node* n = f->find("data")) {
@@ -233,7 +247,7 @@ void SourceParser::init_cmds(const Node& node, Context context, const ObjectName
         if (f->has("value") && f->has("data"))
             r_.error(*f->key_node("data"), "yaml-conflict", "give either 'value' (typed by the object) or 'data' (raw bytes), not both");
         else if (!f->has("value") && !f->has("data"))
-            r_.error(f->node(), "yaml-missing-key", context == Context::init_coe ? "an InitCmd needs 'value' or 'data'" : "an InitCmd needs 'data'");
+            r_.error(f->node(), "yaml-missing-key", protocol == MailboxProtocol::coe ? "an InitCmd needs 'value' or 'data'" : "an InitCmd needs 'data'");
         if (const Node* n = f->find("adapt_automatically")) cmd.data_adapt_automatically = r_.boolean(*n, "adapt_automatically");
         r_.optional_text(*f, "comment", cmd.comment);
         r_.optional_bool(*f, "fixed", cmd.fixed);
@@ -277,19 +291,18 @@ std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, 
         }
         return r_.mapping(*n, ctx, key);
     };
+    auto read_flags = [&](const Fields& p, auto& out, const auto& flags) {
+        for (const auto& flag : flags) r_.optional_bool(p, flag.key, out.*flag.field);
+    };
+    // EoE, SoE and AoE: after their typed settings, their InitCmds and unmodelled XML.
+    auto init_cmds_and_xml = [&](const Fields& p, auto& out, MailboxProtocol which) {
+        if (const Node* n = p.find("init")) init_cmds(*n, which, names, out.init_cmds, nullptr);
+        extras(p, "xml", out.extras);
+    };
     if (auto p = protocol("coe", Context::coe)) {
         CoeProtocol coe;
         coe.pos = f->find("coe") ? pos_of(*f->find("coe")) : m.pos;
-        r_.optional_bool(*p, "sdo_info", coe.sdo_info);
-        r_.optional_bool(*p, "pdo_assign", coe.pdo_assign);
-        r_.optional_bool(*p, "pdo_config", coe.pdo_config);
-        r_.optional_bool(*p, "pdo_upload", coe.pdo_upload);
-        r_.optional_bool(*p, "complete_access", coe.complete_access);
-        r_.optional_bool(*p, "segmented_sdo", coe.segmented_sdo);
-        r_.optional_bool(*p, "diag_history", coe.diag_history);
-        r_.optional_bool(*p, "sdo_upload_with_max_length", coe.sdo_upload_with_max_length);
-        r_.optional_bool(*p, "time_distribution", coe.time_distribution);
-        r_.optional_bool(*p, "module_od", coe.module_od);
+        read_flags(*p, coe, coe_flags);
         r_.optional_text(*p, "eds_file", coe.eds_file);
         r_.optional_integer(*p, "ds402_channels", coe.ds402_channels);
         extras(*p, "xml", coe.extras);
@@ -298,30 +311,23 @@ std::optional<Mailbox> SourceParser::mailbox(const Node& node, Context context, 
     if (auto p = protocol("eoe", Context::eoe)) {
         EoeProtocol eoe;
         eoe.pos = pos_of(*f->find("eoe"));
-        r_.optional_bool(*p, "ip", eoe.ip);
-        r_.optional_bool(*p, "mac", eoe.mac);
-        r_.optional_bool(*p, "time_stamp", eoe.time_stamp);
-        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_eoe, names, eoe.init_cmds, nullptr);
-        extras(*p, "xml", eoe.extras);
+        read_flags(*p, eoe, eoe_flags);
+        init_cmds_and_xml(*p, eoe, MailboxProtocol::eoe);
         m.eoe = std::move(eoe);
     }
     if (auto p = protocol("soe", Context::soe)) {
         SoeProtocol soe;
         soe.pos = pos_of(*f->find("soe"));
         r_.optional_integer(*p, "channel_count", soe.channel_count);
-        r_.optional_bool(*p, "drive_follows_bit3_support", soe.drive_follows_bit3_support);
-        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_soe, names, soe.init_cmds, nullptr);
-        extras(*p, "xml", soe.extras);
+        read_flags(*p, soe, soe_flags);
+        init_cmds_and_xml(*p, soe, MailboxProtocol::soe);
         m.soe = std::move(soe);
     }
     if (auto p = protocol("aoe", Context::aoe)) {
         AoeProtocol aoe;
         aoe.pos = pos_of(*f->find("aoe"));
-        r_.optional_bool(*p, "ads_router", aoe.ads_router);
-        r_.optional_bool(*p, "generate_own_net_id", aoe.generate_own_net_id);
-        r_.optional_bool(*p, "initialize_own_net_id", aoe.initialize_own_net_id);
-        if (const Node* n = p->find("init")) init_cmds(*n, Context::init_aoe, names, aoe.init_cmds, nullptr);
-        extras(*p, "xml", aoe.extras);
+        read_flags(*p, aoe, aoe_flags);
+        init_cmds_and_xml(*p, aoe, MailboxProtocol::aoe);
         m.aoe = std::move(aoe);
     }
     for (const char* key : {"foe", "voe"}) {

@@ -329,7 +329,7 @@ std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional
         if (!d.mailbox || !d.mailbox->coe) {
             r_.error(*f->key_node("init"), "yaml-missing-key", "'init' holds CoE InitCmds; the device needs 'mailbox: {coe: …}'");
         } else {
-            init_cmds(*n, Context::init_coe, names, d.mailbox->coe->init_cmds, &intent.init_values);
+            init_cmds(*n, MailboxProtocol::coe, names, d.mailbox->coe->init_cmds, &intent.init_values);
         }
     }
     if (const Node* n = f->find("sms")) d.sms = sync_managers(*n, intent.sm_size_pos);

@@ -42,7 +42,7 @@ std::optional<ParsedModule> SourceParser::module(const Node& node) {
         if (!m.mailbox || !m.mailbox->coe)
             r_.error(*f->key_node("init"), "yaml-missing-key", "'init' holds CoE InitCmds; the module needs 'mailbox: {coe: …}'");
         else
-            init_cmds(*n, Context::init_coe, names, m.mailbox->coe->init_cmds, &out.intent.init_values);
+            init_cmds(*n, MailboxProtocol::coe, names, m.mailbox->coe->init_cmds, &out.intent.init_values);
     }
     if (const Node* n = f->find("rxpdo")) m.rx_pdos = pdos(*n, PdoDirection::rx, names, &out.intent.rx_assign);
     if (const Node* n = f->find("txpdo")) m.tx_pdos = pdos(*n, PdoDirection::tx, names, &out.intent.tx_assign);

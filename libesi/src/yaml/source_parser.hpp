@@ -65,7 +65,7 @@ private:
     std::optional<std::vector<Transition>> transitions(const Node& node);
     DeriveOptions derive_options(const Node& node, bool module);
     std::optional<Profile> profile(const Node& node);
-    void init_cmds(const Node& node, Context context, const ObjectNames& names, std::vector<InitCmd>& out,
+    void init_cmds(const Node& node, MailboxProtocol protocol, const ObjectNames& names, std::vector<InitCmd>& out,
                    std::vector<InitCmdValue>* values);
     std::optional<Mailbox> mailbox(const Node& node, Context context, MailboxLayout* layout, const ObjectNames& names);
     std::vector<Pdo> pdos(const Node& node, PdoDirection direction, const ObjectNames& names, std::vector<bool>* assign);

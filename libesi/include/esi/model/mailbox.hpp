@@ -2,6 +2,7 @@
 // Mailbox element: protocols, CoE flags and the InitCmds a master sends on state transitions.
 
 #include "esi/model/common.hpp"
+#include "esi/model/mailbox_protocol.hpp"
 
 namespace esi {
 
@@ -94,8 +95,20 @@ struct Mailbox {
     SourcePos pos;
     Extras extras;
 
+    [[nodiscard]] bool has(MailboxProtocol protocol) const;
     // SII word 0x1C bits: AoE 0x01, EoE 0x02, CoE 0x04, FoE 0x08, SoE 0x10, VoE 0x20.
     [[nodiscard]] std::uint16_t protocol_bits() const;
+    // The protocol's InitCmds; null when the mailbox has no such protocol or it carries none
+    // (FoE, VoE).
+    [[nodiscard]] const std::vector<InitCmd>* init_cmds(MailboxProtocol protocol) const;
+    // Calls f(protocol, cmd) for every InitCmd: the protocols in init_cmd_protocols order, the
+    // commands of each in document order.
+    template <class F>
+    void for_each_init_cmd(F&& f) const {
+        for (const MailboxProtocol protocol : init_cmd_protocols)
+            if (const std::vector<InitCmd>* cmds = init_cmds(protocol))
+                for (const InitCmd& cmd : *cmds) f(protocol, cmd);
+    }
 };
 
 }  // namespace esi

@@ -14,6 +14,7 @@
 
 #include "esi/diagnostic.hpp"
 #include "esi/model/ethercat_info.hpp"
+#include "esi/model/language.hpp"
 #include "esi/sii/image.hpp"
 
 namespace esi::sii {
@@ -24,7 +25,7 @@ struct BuildOptions {
     // Language of the names written as strings: this LcId when the ESI has it, else the usual
     // primary name (English, else the name without LcId, else the first). Beckhoff's own
     // images carry the German (1031) names.
-    std::uint32_t name_lcid = 1033;
+    std::uint32_t name_lcid = default_lcid;
     // Fill the image with 0xFF (erased EEPROM) up to the EEPROM size, as every tool that wrote
     // the corpus images does.
     bool pad_to_eeprom_size = true;

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "esi/model/mailbox_protocol.hpp"
+
 namespace esi::sii {
 
 // Word addresses of the header (0x00-0x3F).
@@ -86,12 +88,12 @@ inline constexpr std::size_t dc_op_mode_bytes = 24;      // ETG.2010 Table 12
 
 // Word 0x1C bits (ETG.1000.6 Table 18).
 namespace mailbox_protocol {
-inline constexpr std::uint16_t aoe = 0x01;
-inline constexpr std::uint16_t eoe = 0x02;
-inline constexpr std::uint16_t coe = 0x04;
-inline constexpr std::uint16_t foe = 0x08;
-inline constexpr std::uint16_t soe = 0x10;
-inline constexpr std::uint16_t voe = 0x20;
+inline constexpr std::uint16_t aoe = sii_bit(MailboxProtocol::aoe);  // 0x01
+inline constexpr std::uint16_t eoe = sii_bit(MailboxProtocol::eoe);  // 0x02
+inline constexpr std::uint16_t coe = sii_bit(MailboxProtocol::coe);  // 0x04
+inline constexpr std::uint16_t foe = sii_bit(MailboxProtocol::foe);  // 0x08
+inline constexpr std::uint16_t soe = sii_bit(MailboxProtocol::soe);  // 0x10
+inline constexpr std::uint16_t voe = sii_bit(MailboxProtocol::voe);  // 0x20
 }  // namespace mailbox_protocol
 
 // General category byte 5 (CoE details).

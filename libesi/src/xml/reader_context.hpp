@@ -1,0 +1,277 @@
+#pragma once
+// The ESI XML reader's shared context: one Reader per document walks the pugixml DOM; its
+// element readers live in one file per concept, as the writer's do: reader.cpp (document,
+// EtherCATInfo, vendor, groups, unknown elements kept verbatim), reader_device.cpp (device,
+// SyncManagers, FMMUs, PDOs, Dc, Eeprom), reader_mailbox.cpp (mailbox protocols and InitCmds),
+// reader_dictionary.cpp (profiles and object dictionaries), reader_modules.cpp (modules and
+// slots). The scalar readers below (numbers, booleans, hex data, names) are defined here so that
+// every file inlines them: they run for nearly every attribute of a file.
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <pugixml.hpp>
+#include <string>
+#include <string_view>
+#include <type_traits>
+
+#include "esi/model/mailbox_flags.hpp"
+#include "esi/number.hpp"
+#include "esi/source_text.hpp"
+#include "esi/xml/reader.hpp"
+
+namespace esi::xml_reader {
+
+// Element and attribute names are compared with literals about ten times per element. This
+// compares the length, then a memcmp whose length is known at compile time, which the compiler
+// turns into a load or two, where string_view's operator== is an out-of-line call plus a memcmp
+// call. (always_inline: GCC otherwise keeps some instances out of line, a call per compare.)
+template <std::size_t N>
+[[gnu::always_inline]] inline bool is(std::string_view name, const char (&literal)[N]) {
+    return name.size() == N - 1 && std::memcmp(name.data(), literal, N - 1) == 0;
+}
+
+class Reader {
+public:
+    // `buffer` is the copy of the source text pugixml parsed in place.
+    Reader(const SourceText& source, std::string_view buffer, Diagnostics& diagnostics, const ReadOptions& options)
+        : source_(source), buffer_(buffer), cursor_(source), diagnostics_(diagnostics), options_(options) {}
+
+    EsiDocument read_document(const pugi::xml_node root);
+
+private:
+    // ---- positions and diagnostics ------------------------------------------------------
+    // Where an element starts: the '<' before its name. Parsed in place, the name lies in our
+    // buffer at its offset in the text; one name() call finds it, where offset_debug() and
+    // type() cost two calls and ~45 instructions for every element read.
+    SourcePos pos_of(const pugi::xml_node element) {
+        const auto name = reinterpret_cast<std::uintptr_t>(element.name());
+        const auto begin = reinterpret_cast<std::uintptr_t>(buffer_.data());
+        if (name < begin || name >= begin + buffer_.size()) return {};  // not from the parse
+        const std::size_t offset = name - begin;
+        return cursor_.position_of(offset > 0 ? offset - 1 : 0);
+    }
+
+    void report(Severity severity, std::string rule, std::string message, SourcePos pos) {
+        diagnostics_.emplace(severity, std::move(rule), std::move(message), source_.path(), pos);
+    }
+
+    // ---- scalar values -------------------------------------------------------------------
+    // An element's character data. With parse_embed_pcdata it is the element's own value: one
+    // call instead of the three of text().get(), which only differs for text that is not
+    // embedded (CDATA, text after a comment or a child) and is asked then.
+    static const char* pcdata(const pugi::xml_node n) {
+        const char* value = n.value();
+        return *value ? value : n.text().get();
+    }
+    static std::string text_of(const pugi::xml_node node) { return std::string(trim(pcdata(node))); }
+
+    // Where a scalar was read from: named ("Sm@StartAddress", or the element's name) and located
+    // only when the value is bad, so that a good value costs no string allocation and no
+    // position lookup.
+    struct ValueSite {
+        pugi::xml_node element;
+        pugi::xml_attribute attribute = {};
+        std::string_view label = {};  // used instead of the element/attribute names when set
+    };
+    static std::string describe(const ValueSite& site) {
+        if (!site.label.empty()) return std::string(site.label);
+        if (site.attribute) return std::string(site.element.name()) + "@" + site.attribute.name();
+        return site.element.name();
+    }
+
+    std::optional<Number> number(std::string_view text, const ValueSite& site) {
+        const ParsedNumber parsed = parse_number(text);
+        if (!parsed.ok()) {
+            report(Severity::error, "xml-number-format",
+                   describe(site) + ": '" + excerpt(trim(text)) + "' is not a number (" + std::string(to_string(parsed.error)) +
+                       "); ESI numbers are decimal or #x hex",
+                   pos_of(site.element));
+            return std::nullopt;
+        }
+        if (parsed.syntax == NumberSyntax::c_hex) {
+            report(Severity::warning, "xml-hex-prefix",
+                   describe(site) + ": '" + excerpt(trim(text)) + "' uses the C prefix 0x; ESI hex numbers are written #x",
+                   pos_of(site.element));
+        }
+        return parsed.value;
+    }
+    std::optional<Number> number(const pugi::xml_node n) { return number(pcdata(n), ValueSite{n}); }
+
+    template <class T>
+    std::optional<T> integer(std::string_view text, const ValueSite& site) {
+        const std::optional<Number> n = number(text, site);
+        if (!n) return std::nullopt;
+        if constexpr (std::is_signed_v<T>) {
+            const auto v = n->as_int64();
+            if (!v || *v < std::numeric_limits<T>::min() || *v > std::numeric_limits<T>::max()) {
+                report(Severity::error, "xml-number-range", describe(site) + ": " + format_decimal(*n) + " is out of range",
+                       pos_of(site.element));
+                return std::nullopt;
+            }
+            return static_cast<T>(*v);
+        } else {
+            const auto v = n->as_uint64();
+            if (!v || *v > std::numeric_limits<T>::max()) {
+                report(Severity::error, "xml-number-range",
+                       describe(site) + ": " + format_decimal(*n) + " is out of range (0.." +
+                           std::to_string(std::numeric_limits<T>::max()) + ")",
+                       pos_of(site.element));
+                return std::nullopt;
+            }
+            return static_cast<T>(*v);
+        }
+    }
+
+    std::optional<std::uint32_t> u32(const pugi::xml_attribute a, const pugi::xml_node owner) {
+        return integer<std::uint32_t>(a.value(), ValueSite{owner, a});
+    }
+    std::optional<std::int32_t> i32(const pugi::xml_attribute a, const pugi::xml_node owner) {
+        return integer<std::int32_t>(a.value(), ValueSite{owner, a});
+    }
+    std::optional<std::uint32_t> u32(const pugi::xml_node n) { return integer<std::uint32_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::int32_t> i32(const pugi::xml_node n) { return integer<std::int32_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::int64_t> i64(const pugi::xml_node n) { return integer<std::int64_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::uint64_t> u64(const pugi::xml_node n) { return integer<std::uint64_t>(pcdata(n), ValueSite{n}); }
+
+    std::optional<bool> boolean(std::string_view text, const ValueSite& site) {
+        const auto b = parse_boolean(text);
+        if (!b)
+            report(Severity::error, "xml-boolean-format",
+                   describe(site) + ": '" + excerpt(trim(text)) + "' is not a boolean (true, false, 1 or 0)", pos_of(site.element));
+        return b;
+    }
+    std::optional<bool> boolean(const pugi::xml_attribute a, const pugi::xml_node owner) { return boolean(a.value(), ValueSite{owner, a}); }
+    std::optional<bool> boolean(const pugi::xml_node n) { return boolean(pcdata(n), ValueSite{n}); }
+
+    HexData hex(const pugi::xml_node n) {
+        HexData out;
+        out.pos = pos_of(n);
+        const std::string_view raw = trim(pcdata(n));
+        const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+        // Hex data is almost never split over lines. The test for a blank is two compares per
+        // byte (only bytes up to ' ' can be one), where find_first_of(" \t\n\r") searches the
+        // set for every byte, some 500 instructions per DefaultData.
+        if (std::none_of(raw.begin(), raw.end(), [&](char c) { return static_cast<unsigned char>(c) <= ' ' && is_space(c); })) {
+            out.text.assign(raw);
+            return out;
+        }
+        out.text.reserve(raw.size());
+        for (char c : raw)
+            if (!is_space(c)) out.text.push_back(c);
+        return out;
+    }
+
+    LocalizedText localized(const pugi::xml_node n) {
+        LocalizedText t;
+        t.text = text_of(n);
+        t.pos = pos_of(n);
+        for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
+            if (is(a.name(), "LcId")) t.lcid = integer<std::uint32_t>(a.value(), ValueSite{n, a, "LcId"});
+        }
+        return t;
+    }
+
+    // DependOnSlot and DependOnSlotGroup of an Index or Exclude element (ETG.2000 Slots: the
+    // index is raised by the slot's or the slot group's increment for each instance). Every other
+    // attribute goes to `other`; without one they are dropped, as the writer writes these two only.
+    template <class Other>
+    void depend_on_slot(const pugi::xml_node n, std::optional<bool>& on_slot, std::optional<bool>& on_slot_group,
+                        Other&& other) {
+        for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
+            const std::string_view an = a.name();
+            if (is(an, "DependOnSlot")) on_slot = boolean(a, n);
+            else if (is(an, "DependOnSlotGroup")) on_slot_group = boolean(a, n);
+            else other(a);
+        }
+    }
+    void depend_on_slot(const pugi::xml_node n, std::optional<bool>& on_slot, std::optional<bool>& on_slot_group) {
+        depend_on_slot(n, on_slot, on_slot_group, [](pugi::xml_attribute) {});
+    }
+
+    // ---- verbatim store ------------------------------------------------------------------
+    void verbatim(XmlElement& e, const pugi::xml_node n, std::string_view after, std::size_t depth);
+
+    void keep(Extras& extras, const pugi::xml_node n, std::string_view after) {
+        verbatim(extras.elements.emplace_back(), n, after, 1);
+    }
+    static void keep(Extras& extras, const pugi::xml_attribute a) { extras.attributes.push_back({a.name(), a.value()}); }
+
+    // Iterates element children, tracking the name of the previous element for Extras.after.
+    // (pugixml is a shared library: every node access is a call. Walking with first_child /
+    // next_sibling and taking each name once costs four calls and one strlen per child; the
+    // range-for over children() costs seven calls and two.)
+    // Element children are the ones with a name: with the parse options used, an element's
+    // other children are character data (pcdata, cdata), which has none; comments, processing
+    // instructions and declarations are not parsed. So the name tells without a type() call.
+    template <class F>
+    void for_children(const pugi::xml_node n, F&& f) {
+        std::string_view previous;
+        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
+            const std::string_view name = c.name();
+            if (name.empty()) continue;
+            f(c, name, previous);
+            previous = name;
+        }
+    }
+
+    // Reserves room for the children named `name` about to be read into `items`: large model
+    // elements (an Object is about 1 KB) are then neither moved while the vector grows nor
+    // left with up to half of its capacity unused.
+    template <class T>
+    static void reserve_for(std::vector<T>& items, const pugi::xml_node n, const char* name) {
+        std::size_t count = 0;
+        for (pugi::xml_node c = n.child(name); c; c = c.next_sibling(name)) ++count;
+        items.reserve(items.size() + count);
+    }
+
+    void missing(std::string_view parent, std::string_view child, SourcePos pos) {
+        report(Severity::error, "xml-missing-element", std::string(parent) + " has no " + std::string(child) + " element", pos);
+    }
+
+    // ---- model elements ------------------------------------------------------------------
+    // reader.cpp
+    void read_info(EtherCATInfo& out, const pugi::xml_node n);
+    void read_vendor(Vendor& out, const pugi::xml_node n);
+    void read_group(Group& out, const pugi::xml_node n);
+    bool read_image(Images& images, const pugi::xml_node c, std::string_view name);
+    // reader_device.cpp
+    void read_device(Device& out, const pugi::xml_node n);
+    void read_identity(DeviceIdentity& out, const pugi::xml_node n);
+    void read_sm(SyncManager& out, const pugi::xml_node n);
+    void read_fmmu(Fmmu& out, const pugi::xml_node n);
+    void read_su(SyncUnit& out, const pugi::xml_node n);
+    void read_pdo(Pdo& out, const pugi::xml_node n, PdoDirection direction);
+    void read_entry(PdoEntry& out, const pugi::xml_node n);
+    void read_dc(Dc& out, const pugi::xml_node n);
+    void read_op_mode(DcOpMode& out, const pugi::xml_node n);
+    DcTime read_dc_time(const pugi::xml_node n);
+    void read_eeprom(Eeprom& out, const pugi::xml_node n);
+    // reader_mailbox.cpp
+    void read_mailbox(Mailbox& out, const pugi::xml_node n);
+    void read_init_cmd(InitCmd& out, const pugi::xml_node n);
+    template <class Protocol, std::size_t N, class Attribute>
+    void read_protocol(Protocol& out, const pugi::xml_node n, const MailboxFlag<Protocol> (&flags)[N], Attribute&& attribute);
+    // reader_dictionary.cpp
+    void read_profile(Profile& out, const pugi::xml_node n);
+    void read_dictionary(Dictionary& out, const pugi::xml_node n);
+    void read_data_type(DataType& out, const pugi::xml_node n);
+    void read_type_sub_item(DataTypeSubItem& out, const pugi::xml_node n);
+    void read_object(Object& out, const pugi::xml_node n);
+    void read_object_info(ObjectInfo& out, const pugi::xml_node n, std::size_t depth);
+    void read_flags(ObjectFlags& out, const pugi::xml_node n);
+    // reader_modules.cpp
+    void read_module(Module& out, const pugi::xml_node n);
+    void read_slots(Slots& out, const pugi::xml_node n);
+    void read_slot(Slot& out, const pugi::xml_node n);
+
+    const SourceText& source_;
+    std::string_view buffer_;
+    PositionCursor cursor_;
+    Diagnostics& diagnostics_;
+    const ReadOptions& options_;
+    bool depth_reported_ = false;
+};
+
+}  // namespace esi::xml_reader
