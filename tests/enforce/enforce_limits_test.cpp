@@ -18,7 +18,11 @@ using esi::test::enforce::check;
 using esi::test::enforce::describe;
 using esi::test::enforce::findings;
 using esi::test::enforce::line_of;
-using esi::test::enforce::stoeber_sample;
+using esi::test::enforce::fifth_rx_pdo;
+using esi::test::enforce::stoeber_with_a180_at_20b5;
+using esi::test::enforce::stoeber_with_a_fifth_rx_pdo;
+using esi::test::enforce::stoeber_with_an_init_cmd_at_ib;
+using esi::test::enforce::stoeber_with_seven_entries;
 using esi::test::enforce::Where;
 using esi::test::read_text;
 using esi::test::TempDir;
@@ -36,47 +40,30 @@ TEST(EnforceLimits, TheSamplesDeclaredLimitsHold) {
 }
 
 TEST(EnforceLimits, AFifthRxPdoIsLocatedAtThatPdo) {
-    std::string text = stoeber_sample();
-    const std::string anchor = "      - { index: 0x1603, name: PDO4 rx (A228), assigned: false, entries: [] }\n";
-    ASSERT_NE(text.find(anchor), std::string::npos);
-    const std::string fifth = "      - { index: 0x1604, name: PDO5 rx, assigned: false, entries: [] }\n";
-    text.insert(text.find(anchor) + anchor.size(), fifth);
+    const std::string text = stoeber_with_a_fifth_rx_pdo();
     const auto found = check(text);
-    const std::uint32_t line = line_of(text, fifth);
+    const std::uint32_t line = line_of(text, fifth_rx_pdo);
     EXPECT_EQ(findings(found, "profile-max-pdos"), (std::set<Where>{{line, 9}})) << describe(found);
     EXPECT_EQ(findings(found, "profile-pdo-index-range"), (std::set<Where>{{line, 18}})) << describe(found);
     EXPECT_TRUE(found.has_errors());
 }
 
 TEST(EnforceLimits, SevenEntriesAreLocatedAtTheirPdo) {
-    std::string text = stoeber_sample();
-    const std::string entries = "entries: [0x20B4, 0x26E6, 0x24E6]";
-    ASSERT_NE(text.find(entries), std::string::npos);
-    text.replace(text.find(entries), entries.size(), "entries: [0x20B4, 0x26E6, 0x24E6, 0x20B4, 0x26E6, 0x24E6, 0x20B4]");
+    const std::string text = stoeber_with_seven_entries();
     const auto found = check(text);
     EXPECT_EQ(findings(found, "profile-max-entries"), (std::set<Where>{{line_of(text, "{ index: 0x1600,"), 9}})) << describe(found);
     for (const auto& d : found) EXPECT_TRUE(d.rule.starts_with("profile-")) << d.rule;
 }
 
 TEST(EnforceLimits, AnInitCmdAtAnUnsupportedTransitionIsLocatedAtTheTransition) {
-    std::string text = stoeber_sample();
-    const std::string anchor = "    # The limits of samples/profiles/inverter-stoeber.yaml";
-    ASSERT_NE(text.find(anchor), std::string::npos);
-    text.insert(text.find(anchor), "    init:\n      - { transition: IB, object: 0x2104, value: 1 }\n\n");
+    const std::string text = stoeber_with_an_init_cmd_at_ib();
     const auto found = check(text);
     EXPECT_EQ(findings(found, "profile-initcmd-transition"), (std::set<Where>{{line_of(text, "transition: IB"), 23}}))
         << describe(found);
 }
 
 TEST(EnforceLimits, AWrongStoeberParameterIndexIsLocatedAtTheObject) {
-    // A180 belongs at 0x2000 + 0 × 0x200 + 180 = 0x20B4 (STÖBER manual §7.2.4).
-    std::string text = stoeber_sample();
-    for (const std::string from : {"0x20B4:\n        name: A180", "[0x20B4, "}) {
-        ASSERT_NE(text.find(from), std::string::npos) << from;
-        std::string to = from;
-        to.replace(to.find("0x20B4"), 6, "0x20B5");
-        text.replace(text.find(from), from.size(), to);
-    }
+    const std::string text = stoeber_with_a180_at_20b5();
     const auto found = check(text);
     EXPECT_EQ(findings(found, "profile-parameter-index"), (std::set<Where>{{line_of(text, "0x20B5:"), 7}})) << describe(found);
     ASSERT_EQ(found.size(), 1u) << describe(found);
@@ -258,34 +245,23 @@ TEST(EnforceLimits, AnUnusableConfigIsAnErrorInTheConfig) {
     EXPECT_EQ(missing.items()[0].path, (dir / "none.yaml").string()) << describe(missing);
 }
 
-// Two revisions of one product code, each with its own limits: each is judged by its own.
-const std::string two_revisions = R"(vendor: { id: 0xE4, name: Example }
-devices:
-  - type: EX
-    name: EX rev 1
-    product_code: 0x10
-    revision: 1
-    group: G
-    mailbox: { size: 128, coe: { sdo_info: false } }
-    objects:
-      0x7000: { name: Out, type: USINT, access: rw, pdo: rx }
-    rxpdo:
-      - { index: 0x1600, entries: [0x7000] }
-      - { index: 0x1601, assigned: false, entries: [] }
-    limits: { max_pdos: { rx: 1 } }
-  - type: EX
-    name: EX rev 2
-    product_code: 0x10
-    revision: 2
-    group: G
-    mailbox: { size: 128, coe: { sdo_info: false } }
-    objects:
-      0x7000: { name: Out, type: USINT, access: rw, pdo: rx }
-    rxpdo:
-      - { index: 0x1600, entries: [0x7000] }
-      - { index: 0x1601, assigned: false, entries: [] }
-    limits: { max_pdos: { rx: 2 } }
-)";
+// Two revisions of one product code, each with two RxPDOs and its own limits.
+std::string revision(int number, int max_rx_pdos) {
+    return "  - type: EX\n"
+           "    name: EX rev " + std::to_string(number) + "\n"
+           "    product_code: 0x10\n"
+           "    revision: " + std::to_string(number) + "\n"
+           "    group: G\n"
+           "    mailbox: { size: 128, coe: { sdo_info: false } }\n"
+           "    objects:\n"
+           "      0x7000: { name: Out, type: USINT, access: rw, pdo: rx }\n"
+           "    rxpdo:\n"
+           "      - { index: 0x1600, entries: [0x7000] }\n"
+           "      - { index: 0x1601, assigned: false, entries: [] }\n"
+           "    limits: { max_pdos: { rx: " + std::to_string(max_rx_pdos) + " } }\n";
+}
+
+const std::string two_revisions = "vendor: { id: 0xE4, name: Example }\ndevices:\n" + revision(1, 1) + revision(2, 2);
 
 TEST(EnforceLimits, EachRevisionIsHeldToItsOwnLimits) {
     const auto found = check(two_revisions);

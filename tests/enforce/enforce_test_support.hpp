@@ -18,6 +18,45 @@ using Where = std::pair<std::uint32_t, std::uint32_t>;  // line, column
 
 inline std::string stoeber_sample() { return read_text(source_dir() / "samples" / "inverter-stoeber-mds5000.yaml"); }
 
+// The STÖBER sample, which declares its manual's limits, broken in the four ways of issue 11.
+// Each edit is found by its text, so that the sample may change around it.
+inline void edit(std::string& text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << "the sample no longer contains: " << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+}
+
+inline const std::string fifth_rx_pdo = "      - { index: 0x1604, name: PDO5 rx, assigned: false, entries: [] }\n";
+
+inline std::string stoeber_with_a_fifth_rx_pdo() {
+    std::string text = stoeber_sample();
+    const std::string fourth = "      - { index: 0x1603, name: PDO4 rx (A228), assigned: false, entries: [] }\n";
+    edit(text, fourth, fourth + fifth_rx_pdo);
+    return text;
+}
+
+inline std::string stoeber_with_seven_entries() {
+    std::string text = stoeber_sample();
+    edit(text, "entries: [0x20B4, 0x26E6, 0x24E6]", "entries: [0x20B4, 0x26E6, 0x24E6, 0x20B4, 0x26E6, 0x24E6, 0x20B4]");
+    return text;
+}
+
+// IB (Init to Bootstrap): the inverter has no bootstrap state.
+inline std::string stoeber_with_an_init_cmd_at_ib() {
+    std::string text = stoeber_sample();
+    const std::string limits = "    # The limits of samples/profiles/inverter-stoeber.yaml";
+    edit(text, limits, "    init:\n      - { transition: IB, object: 0x2104, value: 1 }\n\n" + limits);
+    return text;
+}
+
+// A180 belongs at 0x2000 + 0 × 0x200 + 180 = 0x20B4 (STÖBER manual §7.2.4); here it is at 0x20B5.
+inline std::string stoeber_with_a180_at_20b5() {
+    std::string text = stoeber_sample();
+    edit(text, "0x20B4:\n        name: A180", "0x20B5:\n        name: A180");
+    edit(text, "[0x20B4, ", "[0x20B5, ");
+    return text;
+}
+
 // Loads `text` as the file `path` (it must load without errors) and enforces its limits.
 inline Diagnostics check(const std::string& text, const std::string& path = "device.yaml",
                          const std::optional<std::filesystem::path>& config = std::nullopt,

@@ -10,12 +10,10 @@
 namespace {
 
 namespace tc = esi::test::codegen;
-using esi::test::read_text;
 using esi::test::source_dir;
 using esi::test::TempDir;
 using esi::test::write_text;
 using esi::test::enforce::line_of;
-using esi::test::enforce::stoeber_sample;
 
 std::filesystem::path sample(const std::string& name) { return source_dir() / "samples" / name; }
 std::filesystem::path profile(const std::string& name) { return source_dir() / "samples" / "profiles" / name; }
@@ -40,10 +38,7 @@ std::string located(const std::string& text, const std::string& needle, std::uin
 }
 
 TEST(EsiGenLimits, AFifthRxPdoStopsTheRun) {
-    std::string text = stoeber_sample();
-    const std::string anchor = "      - { index: 0x1603, name: PDO4 rx (A228), assigned: false, entries: [] }\n";
-    ASSERT_NE(text.find(anchor), std::string::npos);
-    text.insert(text.find(anchor) + anchor.size(), "      - { index: 0x1604, name: PDO5 rx, assigned: false, entries: [] }\n");
+    const std::string text = esi::test::enforce::stoeber_with_a_fifth_rx_pdo();
     const auto r = expect_refused(text);
     EXPECT_NE(r.err.find(located(text, "index: 0x1604", 9) + "the device declares 5 RxPdos; its profile allows at most 4"),
               std::string::npos)
@@ -51,9 +46,7 @@ TEST(EsiGenLimits, AFifthRxPdoStopsTheRun) {
 }
 
 TEST(EsiGenLimits, SevenEntriesStopTheRun) {
-    std::string text = stoeber_sample();
-    const std::string entries = "entries: [0x20B4, 0x26E6, 0x24E6]";
-    text.replace(text.find(entries), entries.size(), "entries: [0x20B4, 0x26E6, 0x24E6, 0x20B4, 0x26E6, 0x24E6, 0x20B4]");
+    const std::string text = esi::test::enforce::stoeber_with_seven_entries();
     const auto r = expect_refused(text);
     EXPECT_NE(r.err.find(located(text, "index: 0x1600", 9) + "RxPdo #x1600 has 7 entries; the profile allows at most 6 per PDO "
                                                              "[profile-max-entries]"),
@@ -62,9 +55,7 @@ TEST(EsiGenLimits, SevenEntriesStopTheRun) {
 }
 
 TEST(EsiGenLimits, AnInitCmdAtAnUnsupportedTransitionStopsTheRun) {
-    std::string text = stoeber_sample();
-    const std::string anchor = "    # The limits of samples/profiles/inverter-stoeber.yaml";
-    text.insert(text.find(anchor), "    init:\n      - { transition: IB, object: 0x2104, value: 1 }\n\n");
+    const std::string text = esi::test::enforce::stoeber_with_an_init_cmd_at_ib();
     const auto r = expect_refused(text);
     EXPECT_NE(r.err.find(located(text, "transition: IB", 23) + "CoE InitCmd transition 'IB' is not one the profile allows"),
               std::string::npos)
@@ -72,12 +63,7 @@ TEST(EsiGenLimits, AnInitCmdAtAnUnsupportedTransitionStopsTheRun) {
 }
 
 TEST(EsiGenLimits, AWrongStoeberParameterIndexStopsTheRun) {
-    std::string text = stoeber_sample();
-    for (const std::string from : {"0x20B4:\n        name: A180", "[0x20B4, "}) {
-        std::string to = from;
-        to.replace(to.find("0x20B4"), 6, "0x20B5");
-        text.replace(text.find(from), from.size(), to);
-    }
+    const std::string text = esi::test::enforce::stoeber_with_a180_at_20b5();
     const auto r = expect_refused(text);
     EXPECT_NE(r.err.find(located(text, "0x20B5:", 7) + "object #x20B5 is named 'A180 Device Control Byte', but parameter A180 "
                                                        "is at #x20B4"),
