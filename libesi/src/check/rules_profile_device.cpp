@@ -9,7 +9,6 @@
 
 #include "check/areas.hpp"
 #include "check/od_text.hpp"
-#include "esi/number.hpp"
 
 namespace esi::rules {
 
@@ -21,7 +20,7 @@ void for_each_limited_device(const EsiDocument& document, RuleContext& context, 
         for (const auto& device : info.devices) f(device, context.limits_for(device));
 }
 
-std::string quoted_list(const std::vector<std::string>& values) {
+std::string list_text(const std::vector<std::string>& values) {
     std::string out;
     for (const auto& v : values) out += (out.empty() ? "" : ", ") + v;
     return out;
@@ -39,16 +38,16 @@ void check_mailbox_protocol(const EsiDocument& document, RuleContext& context) {
     for_each_limited_device(document, context, [&](const Device& device, const Limits& limits) {
         if (limits.mailbox_protocols.empty() || !device.mailbox) return;
         const Mailbox& m = *device.mailbox;
-        const std::pair<const char*, std::optional<SourcePos>> declared[] = {
-            {"AoE", m.aoe ? std::optional(m.aoe->pos) : std::nullopt}, {"EoE", m.eoe ? std::optional(m.eoe->pos) : std::nullopt},
-            {"CoE", m.coe ? std::optional(m.coe->pos) : std::nullopt}, {"FoE", m.foe ? std::optional(m.foe->pos) : std::nullopt},
-            {"SoE", m.soe ? std::optional(m.soe->pos) : std::nullopt}, {"VoE", m.voe ? std::optional(m.voe->pos) : std::nullopt},
+        // Each protocol element the Mailbox has, in ESI order; null where it has none.
+        const std::pair<const char*, const SourcePos*> declared[] = {
+            {"AoE", m.aoe ? &m.aoe->pos : nullptr}, {"EoE", m.eoe ? &m.eoe->pos : nullptr}, {"CoE", m.coe ? &m.coe->pos : nullptr},
+            {"FoE", m.foe ? &m.foe->pos : nullptr}, {"SoE", m.soe ? &m.soe->pos : nullptr}, {"VoE", m.voe ? &m.voe->pos : nullptr},
         };
         const auto& allowed = limits.mailbox_protocols;
         for (const auto& [name, pos] : declared) {
             if (!pos || std::find(allowed.begin(), allowed.end(), name) != allowed.end()) continue;
             context.report(first_known({*pos, m.pos, device.pos}),
-                           std::string("the Mailbox declares ") + name + "; the profile allows only " + quoted_list(allowed) +
+                           std::string("the Mailbox declares ") + name + "; the profile allows only " + list_text(allowed) +
                                ", and a master that uses " + name + " gets no answer or a mailbox error");
         }
     });
@@ -62,8 +61,8 @@ constexpr Rule profile_mailbox_protocol{
         "A device implements only some mailbox protocols: of CoE, SoE, FoE and EoE the item/Afag servo controllers "
         "support only CoE ('wird von der item C Serie unterstützt'), another protocol is error 62-2 'EtherCAT "
         "Protokollfehler kein CoE', and firmware goes over RS232, not FoE (the item C series and Afag SE-Power "
-        "EtherCAT manuals §5, §6.5, Tabelle 19); the STÖBER inverters speak CoE for SDO and emergency and VoE for POSITool over EtherCAT "
-        "(STÖBER ECS 5000 EtherCAT manual §7.2, §8, §12). An ESI that declares another protocol in its Mailbox "
+        "EtherCAT manuals §5, §6.5, Tabelle 19); the STÖBER inverters speak CoE for SDO and emergency and VoE for "
+        "POSITool over EtherCAT (STÖBER ECS 5000 EtherCAT manual §7.2, §8, §12). An ESI that declares another protocol in its Mailbox "
         "makes the master use it (the SII mailbox protocol word follows the ESI, ETG.2010 word 0x1C). Set with "
         "`limits: { mailbox_protocols: [CoE] }`.",
     .bad_example = "mailbox_protocols: [CoE] and <Mailbox><CoE/><FoE/></Mailbox>",
