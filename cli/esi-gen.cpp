@@ -15,6 +15,7 @@
 #include "esi/codegen/generate.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
+#include "esi/enforce/limits.hpp"
 #include "esi/import/import.hpp"
 #include "esi/io/atomic_write.hpp"
 #include "esi/load/document.hpp"
@@ -63,7 +64,7 @@ std::optional<fs::path> executable_path(const char* argv0) {
 
 int main(int argc, char** argv) {
     CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
-    std::string source, output_dir, dump_model, device, prefix, import_path;
+    std::string source, output_dir, dump_model, device, prefix, import_path, config;
     std::vector<std::string> only, template_dirs;
     bool list_outputs = false, list_kinds = false, strict_size = false;
     app.add_option("source", source, "YAML device source (.yaml/.yml) or ESI file (.xml)");
@@ -74,6 +75,8 @@ int main(int argc, char** argv) {
     esi::cli::add_device_option(app, device, "only the matching devices");
     app.add_option("--import", import_path, "ESI file to turn into a YAML device source (written to -o, a file)");
     app.add_option("--prefix", prefix, "C symbol prefix (default: each device's c_name)");
+    app.add_option("--config", config,
+                   "an .esi-lint.yaml profile whose limits (with the source's own) every generated device must meet");
     app.add_flag("--list-outputs", list_outputs, "print the files a run would write, one per line, and exit");
     app.add_flag("--list-kinds", list_kinds, "print the output kinds and exit");
     app.add_flag("--strict-size", strict_size,
@@ -126,6 +129,11 @@ int main(int argc, char** argv) {
     esi::LoadedDocument loaded = esi::load_document_file(source);
     print(loaded.diagnostics);
     if (!loaded.document || loaded.diagnostics.has_errors()) return exit_usage;
+    // A device that breaks its limits is a source error: nothing is generated from it.
+    const esi::Diagnostics broken = esi::enforce_limits(
+        loaded, {config.empty() ? std::nullopt : std::optional<fs::path>(config), options.view.device});
+    print(broken);
+    if (broken.has_errors()) return exit_usage;
 
     if (!dump_model.empty()) {
         esi::codegen::ModelViewText view = esi::codegen::model_view_json(*loaded.document, options.view);

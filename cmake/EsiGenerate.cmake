@@ -7,10 +7,11 @@
 #                [ONLY cpp c structs]          # output kinds (default: all; esi-gen --list-kinds)
 #                [TEMPLATES my-templates ...]  # searched before the installed templates
 #                [DEVICE 0x1234:2]             # one device of a multi-device source
+#                [CONFIG profile.yaml]         # an .esi-lint.yaml whose limits every device must meet
 #                [PREFIX board])               # C symbol prefix
 #
 # The generated sources are added to TARGET and their directories to its include path. The files
-# are regenerated when the source, a template or esi-gen itself changes. Which files a source
+# are regenerated when the source, the CONFIG file, a template or esi-gen itself changes. Which files a source
 # yields is asked from esi-gen (--list-outputs) at configure time, and the source is a configure
 # dependency, so adding a device re-runs CMake. Call it in the directory that defines TARGET
 # (CMake attaches custom commands to targets of the same directory).
@@ -20,7 +21,7 @@
 #   LIBESI_TEMPLATE_DIR        the installed templates
 
 function(esi_generate)
-    cmake_parse_arguments(PARSE_ARGV 0 ARG "" "TARGET;SOURCE;OUTPUT_DIR;DEVICE;PREFIX" "ONLY;TEMPLATES")
+    cmake_parse_arguments(PARSE_ARGV 0 ARG "" "TARGET;SOURCE;OUTPUT_DIR;DEVICE;PREFIX;CONFIG" "ONLY;TEMPLATES")
     if(ARG_UNPARSED_ARGUMENTS)
         message(FATAL_ERROR "esi_generate: unknown arguments: ${ARG_UNPARSED_ARGUMENTS}")
     endif()
@@ -72,6 +73,14 @@ function(esi_generate)
     if(ARG_PREFIX)
         list(APPEND args --prefix "${ARG_PREFIX}")
     endif()
+    set(config_file)
+    if(ARG_CONFIG)
+        get_filename_component(config_file "${ARG_CONFIG}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+        if(NOT EXISTS "${config_file}")
+            message(FATAL_ERROR "esi_generate: config ${config_file} does not exist")
+        endif()
+        list(APPEND args --config "${config_file}")
+    endif()
 
     execute_process(COMMAND "${esi_gen}" ${args} --list-outputs
                     OUTPUT_VARIABLE listed ERROR_VARIABLE errors RESULT_VARIABLE result)
@@ -84,7 +93,7 @@ function(esi_generate)
 
     add_custom_command(OUTPUT ${outputs}
                        COMMAND "${esi_gen}" ${args}
-                       DEPENDS "${source}" ${template_files} "${esi_gen}"
+                       DEPENDS "${source}" ${config_file} ${template_files} "${esi_gen}"
                        COMMENT "esi-gen: generating from ${ARG_SOURCE}"
                        VERBATIM)
     target_sources(${ARG_TARGET} PRIVATE ${outputs})

@@ -1,6 +1,7 @@
 // The firmware-build integration end to end: install libesi into a temporary prefix, configure a
 // project that calls esi_generate() against it, build it, run it, and check that editing the
-// device description or a template regenerates what the program reads.
+// device description or a template regenerates what the program reads, and that a limits profile
+// (CONFIG) the device breaks stops the build.
 
 #include <gtest/gtest.h>
 
@@ -37,9 +38,13 @@ TEST(Consumer, InstalledPackageGeneratesTablesThatAProgramReadsAtRunTime) {
     write_text(templates / "process_image.h.mustache", image_template + "#define CONSUMER_TEMPLATE_MARK 1\n");
 
     const auto build = dir.path() / "build";
+    // A limits profile the device meets (esi_generate CONFIG, esi-gen --config).
+    const std::string allowing = "limits: { max_pdos: 4, bitlen: [1, 8, 16, 32] }\n";
+    write_text(dir / "profile.yaml", allowing);
     std::vector<std::string> configure{"cmake", "-S", (esi::test::source_dir() / "tests" / "consumer").string(), "-B", build.string(),
                                        "-DCMAKE_PREFIX_PATH=" + prefix.string(), "-DESI_CONSUMER_SOURCE=" + (dir / "device.xml").string(),
-                                       "-DESI_CONSUMER_TEMPLATES=" + templates.string()};
+                                       "-DESI_CONSUMER_TEMPLATES=" + templates.string(),
+                                       "-DESI_CONSUMER_CONFIG=" + (dir / "profile.yaml").string()};
     if (tc::have_program("ninja")) configure.insert(configure.end(), {"-G", "Ninja"});
     const RunResult configured = run(configure);
     ASSERT_EQ(configured.exit_code, 0) << configured.out << configured.err;
@@ -66,6 +71,18 @@ TEST(Consumer, InstalledPackageGeneratesTablesThatAProgramReadsAtRunTime) {
 
     // Editing a template regenerates too.
     write_text(templates / "process_image.h.mustache", image_template + "#define CONSUMER_TEMPLATE_MARK 2\n");
+    out = build_and_run();
+    EXPECT_NE(out.find("template mark 2\n"), std::string::npos) << out;
+
+    // A profile the device breaks stops the build with esi-gen's located error, and the tables
+    // stay as they were; meeting it again builds.
+    write_text(dir / "profile.yaml", "limits: { bitlen: [16, 32] }\n");
+    const RunResult refused = run({"cmake", "--build", build.string()});
+    EXPECT_NE(refused.exit_code, 0);
+    EXPECT_NE((refused.out + refused.err).find("device.xml:"), std::string::npos) << refused.out << refused.err;
+    EXPECT_NE((refused.out + refused.err).find("[profile-bitlen]"), std::string::npos) << refused.out << refused.err;
+    EXPECT_NE(read_text(build / "generated" / "process_image.h").find("CONSUMER_TEMPLATE_MARK 2"), std::string::npos);
+    write_text(dir / "profile.yaml", allowing);
     out = build_and_run();
     EXPECT_NE(out.find("template mark 2\n"), std::string::npos) << out;
 }

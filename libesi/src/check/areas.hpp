@@ -33,5 +33,6 @@ void add_dc(std::vector<Rule>& out);             // dc-…
 void add_eeprom(std::vector<Rule>& out);         // eeprom-…
 void add_deprecated(std::vector<Rule>& out);     // deprecated-…: CTT TF-1300 group 5
 void add_profile(std::vector<Rule>& out);        // profile-…: the vendor's own limits (Limits)
+void add_profile_device(std::vector<Rule>& out); // profile-…: mailbox, ESC, PDO ownership and names, parameters, SYNC0
 
 }  // namespace esi::rules

@@ -26,6 +26,7 @@ std::vector<Rule> build_catalogue() {
     rules::add_eeprom(rules);
     rules::add_deprecated(rules);
     rules::add_profile(rules);
+    rules::add_profile_device(rules);
     std::sort(rules.begin(), rules.end(), [](const Rule& a, const Rule& b) { return a.id < b.id; });
     return rules;
 }

@@ -91,9 +91,11 @@ constexpr K derive[] = {"groups",          "mailbox",           "sync_managers",
                         "pdo_assignment",  "pdo_entries",       "mapping_objects", "assignment_objects",
                         "sm_types_object", "identity_object",   "device_type_object", "data_types"};
 constexpr K module_derive[] = {"pdo_entries", "data_types"};
-// The keys esi::parse_limits accepts (libesi/src/lint/config.cpp), shared with .esi-lint.yaml.
-constexpr K limits[] = {"max_pdos", "pdo_index_ranges", "max_entries_per_pdo", "bitlen", "fixed_sm",
-                        "transitions", "max_init_cmd_bytes", "max_mailbox_size", "absent_objects"};
+// The keys esi::yaml::read_limits accepts (libesi/src/yaml/limits.cpp), shared with .esi-lint.yaml.
+constexpr K limits[] = {"max_pdos",          "pdo_index_ranges", "max_entries_per_pdo", "bitlen",     "fixed_sm",
+                        "transitions",       "max_init_cmd_bytes", "max_mailbox_size", "absent_objects", "mailbox_protocols",
+                        "max_fmmus",         "max_sms",          "pdo_assign",          "pdo_config", "pdo_names",
+                        "parameter_index",   "sync0_cycle"};
 constexpr K xml[] = {"attributes", "elements"};
 constexpr K xml_element[] = {"after", "xml"};
 

@@ -13,6 +13,14 @@
 //     max_init_cmd_bytes: 4
 //     max_mailbox_size: 128
 //     absent_objects: [0x1008]
+//     mailbox_protocols: [CoE, VoE]
+//     max_fmmus: 4
+//     max_sms: 6
+//     pdo_assign: false
+//     pdo_config: false
+//     pdo_names: { rx: Outputs, tx: Inputs }
+//     parameter_index: { base: 0x2000, group_size: 0x200, groups: A-Z }
+//     sync0_cycle: { min_ns: 1000000, multiple_of_ns: 1000000, factors: [1, 2] }
 
 #include "esi/model/limits.hpp"
 #include "esi/yaml/reader.hpp"
