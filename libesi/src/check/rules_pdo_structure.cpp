@@ -1,6 +1,7 @@
 // Rules of the pdo area on the PDO list of a device or module: index ranges, SyncManager
 // references, duplicates, Exclude references and the 8-bit limits of the CoE mapping and assignment
 // objects.
+#include <algorithm>
 #include <map>
 #include <unordered_set>
 
@@ -8,6 +9,7 @@
 #include "check/od_text.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
+#include "check/slot_places.hpp"
 #include "esi/check/limits.hpp"
 
 namespace esi::rules {
@@ -33,43 +35,119 @@ std::string sm_list(const Device& device) {
     return "declares SM0-SM" + std::to_string(device.sms.size() - 1);
 }
 
-// ---- pdo-index-range ------------------------------------------------------------------------
+// ---- pdo-index-range, pdo-index-area -------------------------------------------------------
 
-void check_index_range(const EsiDocument& document, RuleContext& context) {
+// Whether the master writes a device's PDO indices: into the assignment objects 0x1C12/0x1C13
+// (CoE PdoAssign) or as the mapping object it downloads (CoE PdoConfig).
+bool master_writes_pdo_indices(const Device& device) {
+    if (!device.mailbox || !device.mailbox->coe) return false;
+    const CoeProtocol& coe = *device.mailbox->coe;
+    return coe.pdo_assign.value_or(false) || coe.pdo_config.value_or(false);
+}
+
+// A PDO whose index, in some slot, lies outside its direction's mapping area.
+struct OutOfArea {
+    const Pdo& pdo;
+    std::uint32_t index;          // the index there (the base index outside a slot)
+    std::optional<std::uint32_t> slot;  // the slot number, for slot-dependent indices
+    bool written;                 // the master writes this index (PdoAssign/PdoConfig)
+};
+
+// Calls f(OutOfArea) once per PDO whose index is outside its mapping area in any slot it can
+// take, for devices with CoE and for modules. A slot-dependent index is judged where the module
+// sits (ETG.2000 DependOnSlot), not by its base; a module the document plugs into no device is
+// judged by its base index, and then nothing says whether a master writes it.
+template <class F>
+void for_each_out_of_area(const EsiDocument& document, F&& f) {
     for (const auto& scope : pdo_scopes(document)) {
         // The ranges are those of CoE mapping objects. Devices without CoE (simple terminals,
         // SoE drives whose MDT/AT carry IDNs) number their PDOs freely in the SII.
         if (scope.device && !(scope.device->mailbox && scope.device->mailbox->coe)) continue;
+        const std::vector<SlotPlace> places = scope.module ? slot_places(document, *scope.module) : std::vector<SlotPlace>{};
+        const bool written = scope.device ? master_writes_pdo_indices(*scope.device)
+                                          : std::any_of(places.begin(), places.end(),
+                                                        [](const SlotPlace& p) { return master_writes_pdo_indices(*p.device); });
         scope.for_each_pdo([&](const Pdo& pdo) {
             if (!has_index(pdo)) return;
-            const bool rx = pdo.direction == PdoDirection::rx;
-            const IndexRange& area = rx ? rx_mapping_area : tx_mapping_area;
-            if (area.contains(pdo.index)) return;
-            std::string message = std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is outside the " +
-                                  std::string(pdo.element_name()) + " mapping area " + range_text(area);
-            const IndexRange& other = rx ? tx_mapping_area : rx_mapping_area;
-            if (other.contains(pdo.index))
-                message += "; " + object_address(pdo.index) + (rx ? " is a TxPdo" : " is an RxPdo") + " index, so the PDO is probably declared with the wrong element";
-            context.report(pdo.index_pos, std::move(message));
+            const IndexRange& area = pdo.direction == PdoDirection::rx ? rx_mapping_area : tx_mapping_area;
+            if (places.empty() || !depends_on_slot(pdo)) {
+                if (!area.contains(pdo.index)) f(OutOfArea{pdo, pdo.index, std::nullopt, written});
+                return;
+            }
+            for (const auto& place : places) {
+                const std::uint32_t index = pdo_index_in(pdo, place);
+                if (area.contains(index)) continue;
+                f(OutOfArea{pdo, index, place.slot_number, master_writes_pdo_indices(*place.device)});
+                return;  // one finding per PDO
+            }
         });
     }
+}
+
+std::string out_of_area_message(const OutOfArea& o) {
+    const Pdo& pdo = o.pdo;
+    const bool rx = pdo.direction == PdoDirection::rx;
+    const IndexRange& area = rx ? rx_mapping_area : tx_mapping_area;
+    std::string message = std::string(pdo.element_name()) + " index " + object_address(o.index);
+    if (o.slot) message += " (" + object_address(pdo.index) + " in slot " + std::to_string(*o.slot) + ")";
+    message += " is outside the " + std::string(pdo.element_name()) + " mapping area " + range_text(area);
+    const IndexRange& other = rx ? tx_mapping_area : rx_mapping_area;
+    if (other.contains(o.index))
+        message += "; " + object_address(o.index) + (rx ? " is a TxPdo" : " is an RxPdo") + " index, so the PDO is probably declared with the wrong element";
+    return message;
+}
+
+void check_index_range(const EsiDocument& document, RuleContext& context) {
+    for_each_out_of_area(document, [&](const OutOfArea& o) {
+        if (o.written) context.report(o.pdo.index_pos, out_of_area_message(o));
+    });
 }
 
 constexpr Rule pdo_index_range{
     .id = "pdo-index-range",
     .default_severity = Severity::error,
-    .summary = "RxPdo index outside 0x1600-0x17FF or TxPdo index outside 0x1A00-0x1BFF",
+    .summary = "RxPdo index outside 0x1600-0x17FF or TxPdo index outside 0x1A00-0x1BFF, where the master writes it",
     .rationale =
         "The PDO index is the index of its mapping object, and ETG.1000.6 reserves 0x1600-0x17FF for RxPDO mapping "
-        "and 0x1A00-0x1BFF for TxPDO mapping. A master that uploads or downloads the mapping (PdoAssign/PdoConfig) "
-        "addresses exactly that object, and the SOES tutorial and the item C series and Afag SE-Power EtherCAT "
-        "manuals (§6.1.1, Tabelle 5: RxPDOs 0x1600-0x1603, TxPDOs 0x1A00-0x1A03) rely on the split. An index in the "
-        "other range usually means the PDO was declared with the wrong element. Only devices with CoE are checked: "
-        "without CoE there are no mapping objects and the index only names the PDO in the SII (SoE drives number "
-        "their MDT/AT by IDN).",
-    .bad_example = "<TxPdo Sm=\"3\"><Index>#x1600</Index><Name>Inputs</Name>…</TxPdo>",
-    .good_example = "<TxPdo Sm=\"3\"><Index>#x1A00</Index><Name>Inputs</Name>…</TxPdo>",
+        "and 0x1A00-0x1BFF for TxPDO mapping. A master that assigns or configures PDOs (CoE PdoAssign or PdoConfig) "
+        "writes exactly that index into 0x1C12/0x1C13 and downloads the mapping into that object; a slave stack that "
+        "checks the range aborts the SDO and the transition to SafeOp fails, one that does not takes a TxPDO mapping "
+        "object for outputs. The SOES tutorial and the item C series and Afag SE-Power EtherCAT manuals (§6.1.1, "
+        "Tabelle 5: RxPDOs 0x1600-0x1603, TxPDOs 0x1A00-0x1A03) rely on the split. An index in the other range "
+        "usually means the PDO was declared with the wrong element. A slot-dependent index (DependOnSlot, "
+        "DependOnSlotGroup) is judged in every slot the module can take (ETG.2000 Slots: SlotPdoIncrement). Where "
+        "CoE declares neither PdoAssign nor PdoConfig the index is only a label (pdo-index-area); devices without CoE "
+        "have no mapping objects at all and are not checked.",
+    .bad_example =
+        "<TxPdo Sm=\"3\"><Index>#x1600</Index><Name>Inputs</Name>…</TxPdo> … <CoE PdoAssign=\"true\" PdoConfig=\"true\"/>",
+    .good_example =
+        "<TxPdo Sm=\"3\"><Index>#x1A00</Index><Name>Inputs</Name>…</TxPdo> … <CoE PdoAssign=\"true\" PdoConfig=\"true\"/>",
     .check = check_index_range,
+};
+
+void check_index_area(const EsiDocument& document, RuleContext& context) {
+    for_each_out_of_area(document, [&](const OutOfArea& o) {
+        if (!o.written)
+            context.report(o.pdo.index_pos, out_of_area_message(o) + "; the index is a label only, as CoE declares neither "
+                                                                     "PdoAssign nor PdoConfig");
+    });
+}
+
+constexpr Rule pdo_index_area{
+    .id = "pdo-index-area",
+    .default_severity = Severity::warning,
+    .summary = "A PDO index outside its mapping area on a device whose CoE neither assigns nor configures PDOs",
+    .rationale =
+        "ETG.1000.6 reserves 0x1600-0x17FF for RxPDO and 0x1A00-0x1BFF for TxPDO mapping objects. When the device's "
+        "CoE element declares neither PdoAssign nor PdoConfig (ETG.2000 CoE attributes), a master never writes the "
+        "index into 0x1C12/0x1C13 nor downloads a mapping into it: the index only names the PDO in the SII PDO "
+        "category and in configuration tools, and the process image does not depend on it. Still, the index "
+        "contradicts the device's mapping objects, which CoE masters may read, and usually means the PDO was "
+        "declared with the wrong element (Beckhoff EL9800 evaluation board: RxPdo 0x1A00, TxPdo 0x1600). A module "
+        "that no device of the file takes is judged here too, since nothing says whether its PDOs are written.",
+    .bad_example = "<RxPdo Sm=\"2\"><Index>#x1A00</Index>…</RxPdo> … <CoE/>",
+    .good_example = "<RxPdo Sm=\"2\"><Index>#x1600</Index>…</RxPdo> … <CoE/>",
+    .check = check_index_area,
 };
 
 // ---- pdo-sm-unknown -------------------------------------------------------------------------
@@ -268,6 +346,7 @@ constexpr Rule pdo_mapping_limits{
 void add_pdo_structure(std::vector<Rule>& out) {
     out.insert(out.end(), {
         pdo_index_range,
+        pdo_index_area,
         pdo_sm_unknown,
         pdo_sm_direction,
         pdo_duplicate_index,
