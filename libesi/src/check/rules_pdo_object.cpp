@@ -150,22 +150,25 @@ void check_entry_object_type(const EsiDocument& document, RuleContext& context) 
         context.report(entry.data_type_pos.line ? entry.data_type_pos : entry.pos,
                        entry_label(entry) + " has DataType " + *entry.data_type + " (" + std::string(to_string(written)) + ") but " +
                            target_label(*object, *target) + " is " + target->type + " (" + std::string(to_string(actual)) +
-                           "); a master would misread its value",
+                           "); one of the two is stale, and masters type the process variable by the entry",
                        {context.note(object->pos, "the object is declared here")});
     });
 }
 
 constexpr Rule pdo_entry_object_type{
     .id = "pdo-entry-object-type",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "A PDO entry's DataType differs in kind (signedness) from the object it maps",
     .rationale =
-        "The entry's DataType is what the master uses to interpret the bits; the object's type is what the firmware "
-        "puts there. A signed object described as UDINT reads -1 as 4294967295, and a REAL described as DINT is "
-        "garbage. Generators that choose the DataType by bit width alone produce exactly this, and the device still "
-        "reaches OP, since no state transition checks the DataType (leducp/KickCAT test "
-        "mapping_target_subindex_reconciled_against_object reconciles an entry with its object). Types of the same "
-        "kind and width (UINT/WORD, BOOL/BIT1) are accepted.",
+        "The entry's DataType is what masters use to type the process variable; the object's type is what the "
+        "offline Dictionary says the firmware puts there. Where they differ in kind, one of them is stale: a signed "
+        "value typed UDINT reads -1 as 4294967295, a REAL typed DINT is garbage. Generators that choose the "
+        "DataType by bit width alone produce this (leducp/KickCAT test mapping_target_subindex_reconciled_against_object "
+        "reconciles an entry with its object), but so does a Dictionary left behind when the firmware changed the "
+        "value (Beckhoff EL3692 maps 0x6002:01 as REAL while its Dictionary still says DINT). The sizes agree (a size "
+        "difference is pdo-entry-object-bitlen's finding), so the process-image layout is right and the device "
+        "reaches OP; only the type of one variable is in doubt, and the rule cannot tell which side is wrong: a "
+        "warning that names both. Types of the same kind and width (UINT/WORD, BOOL/BIT1) are accepted.",
     .bad_example =
         "<Object><Index>#x6064</Index><Type>DINT</Type>… <Entry><Index>#x6064</Index><BitLen>32</BitLen><DataType>UDINT</DataType>",
     .good_example =
