@@ -363,9 +363,12 @@ void check_1018(const EsiDocument& document, RuleContext& context, IdentityPart 
                 context.report(at,
                                device_label(device) + ": 0x1018:0" + std::to_string(e.subindex) + " (" + entry->name +
                                    ") defaults to " + hex32(*value) + " but " + e.what + " is " + hex32(*e.value) +
-                                   (part == IdentityPart::revision ? "; a master or the conformance tool that compares the "
-                                                                 "identity object with the description reports a mismatch"
-                                                               : "; the identity object must repeat the description's identity"),
+                                   (part == IdentityPart::revision
+                                        ? "; a master or the conformance tool that compares the identity object with the "
+                                          "description reports a mismatch"
+                                        : std::string(*value == 0 ? " (a placeholder left 0)" : "") +
+                                              "; the identity object must repeat the description's identity (masters identify "
+                                              "the device by its SII, and the conformance tool warns)"),
                                {context.note(e.where, std::string(e.what) + " is written here")});
             }
         }
@@ -376,15 +379,19 @@ void check_1018_device(const EsiDocument& document, RuleContext& context) { chec
 
 constexpr Rule identity_1018_mismatch{
     .id = "identity-1018-mismatch",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "0x1018 vendor id or product code defaults disagree with Vendor/Id or Device/Type",
     .rationale =
         "The identity object 0x1018 (sub 1 vendor id, 2 product code, 3 revision) must report the same identity as "
         "the description and the SII; the conformance tool compares them (CTT TF-1300 4-1 'ESI OD Identity Info', "
-        "TF-2301 0x1018). Defaults are read from DefaultValue or from DefaultData, which holds the bytes "
-        "little-endian (\"02000000\" is 2). A copied dictionary that still carries the template's product code is the "
-        "usual cause (ETG sample ModulesSlots_CiA402; generator templates). A stale revision is "
-        "identity-1018-revision-stale.",
+        "graded a warning in the CTT report posted in leducp/KickCAT#189; TF-2301 0x1018). Defaults are read from "
+        "DefaultValue or from DefaultData, which holds the bytes little-endian (\"02000000\" is 2). A copied "
+        "dictionary that still carries the template's product code, a vendor id written in the wrong byte order, or "
+        "a default left 0 are the usual causes (ETG sample ModulesSlots_CiA402; generator templates). A warning, not "
+        "an error: no master reads these offline defaults. Masters match a device by the identity in its SII against "
+        "the description's Vendor/Id and Type (IgH EtherCAT master ec_slave_config_attach() compares "
+        "slave->sii.vendor_id and product_code; SOEM reads the SII), and the device reports its own 0x1018 online. A "
+        "stale revision is identity-1018-revision-stale.",
     .bad_example =
         "<Type ProductCode=\"#x1001\" ...> ... <SubItem><Name>Product code</Name><Info><DefaultData>02100000</DefaultData>",
     .good_example =
