@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "check/areas.hpp"
+#include "check/od_layout_faults.hpp"
 #include "check/od_scope.hpp"
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
@@ -182,64 +183,44 @@ constexpr Rule od_type_cycle{
     .check = check_type_cycle,
 };
 
-// ---- od-subitem-layout ----------------------------------------------------------------------
+// ---- od-subitem-layout, od-layout-complete-access -----------------------------------------
 
 void check_subitem_layout(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         for (const auto& type : scope.dictionary->data_types) {
-            // Past the end: every SubItem, reported once per DataType (the first in the file).
-            for (const auto& item : type.sub_items) {
-                const std::uint64_t end = item.bit_offset + item.bit_size;
-                if (item.bit_size == 0 || type.bit_size == 0 || end <= type.bit_size) continue;
-                context.report(item.pos, "SubItem '" + item.name + "' ends at bit " + std::to_string(end) + " but DataType " + type.name +
-                                             " has BitSize " + std::to_string(type.bit_size));
-                break;
-            }
-            // Overlaps: only between sub-indices (SubIdx). SubItems without SubIdx are members of
-            // a structure, where SoE dictionaries lay out unions on purpose (Beckhoff
-            // DT_IDN_..._Union).
-            std::vector<const DataTypeSubItem*> items;
-            for (const auto& item : type.sub_items)
-                if (item.bit_size > 0 && item.subindex) items.push_back(&item);
-            std::stable_sort(items.begin(), items.end(),
-                             [](const DataTypeSubItem* a, const DataTypeSubItem* b) { return a->bit_offset < b->bit_offset; });
-            const DataTypeSubItem* reach = nullptr;  // the item that extends furthest so far
-            const DataTypeSubItem* first_item = nullptr;
-            const DataTypeSubItem* first_other = nullptr;
-            std::size_t overlapping = 0;
-            for (const DataTypeSubItem* item : items) {
-                if (reach && item->bit_offset < reach->bit_offset + reach->bit_size) {
-                    if (!first_item) {
-                        first_item = item;
-                        first_other = reach;
-                    }
-                    ++overlapping;
-                }
-                if (!reach || item->bit_offset + item->bit_size > reach->bit_offset + reach->bit_size) reach = item;
-            }
-            if (!first_item) continue;
+            const LayoutFaults faults = layout_faults(type);
+            // Past the end: reported once per DataType, at the first such SubItem in the file.
+            if (const DataTypeSubItem* item = faults.past_end)
+                context.report(item->pos, "SubItem '" + item->name + "' ends at bit " + std::to_string(item->bit_offset + item->bit_size) +
+                                              " but DataType " + type.name + " has BitSize " + std::to_string(type.bit_size));
+            if (!faults.overlapping) continue;
             // One finding per DataType: a type whose BitOffs were never filled in overlaps everywhere.
             const auto bits = [](const DataTypeSubItem& i) {
                 return std::to_string(i.bit_offset) + "-" + std::to_string(i.bit_offset + i.bit_size - 1);
             };
-            std::string message = "SubItem '" + first_item->name + "' (bits " + bits(*first_item) + ") overlaps SubItem '" +
-                                  first_other->name + "' (bits " + bits(*first_other) + ") in DataType " + type.name;
-            if (overlapping > 1) message += " (" + std::to_string(overlapping) + " SubItems overlap others)";
-            context.report(first_item->pos, std::move(message), {context.note(first_other->pos, "the other SubItem")});
+            std::string message = "SubItem '" + faults.overlapping->name + "' (bits " + bits(*faults.overlapping) + ") overlaps SubItem '" +
+                                  faults.overlapped->name + "' (bits " + bits(*faults.overlapped) + ") in DataType " + type.name;
+            if (faults.overlap_count > 1) message += " (" + std::to_string(faults.overlap_count) + " SubItems overlap others)";
+            context.report(faults.overlapping->pos, std::move(message), {context.note(faults.overlapped->pos, "the other SubItem")});
         }
     }
 }
 
 constexpr Rule od_subitem_layout{
     .id = "od-subitem-layout",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "DataType SubItems that overlap or extend past the DataType's BitSize",
     .rationale =
         "The SubItems of a record type are laid out by BitOffs and BitSize inside the type's BitSize (ETG.2000 "
         "DataTypeType). Overlapping SubItems make two sub-entries share bits, and a SubItem past the end reads beyond "
-        "the object; complete-access SDO transfers and generated structs then disagree with the device (ETG.1000.6 "
-        "SDO complete access). Overlaps are checked between sub-indices (SubItems with SubIdx) only, since SoE "
-        "dictionaries describe unions with overlapping structure members; one finding per DataType.",
+        "the object; generated structs and offline tools then disagree with the device. Bit offsets matter only to "
+        "complete access, which transfers a record packed by its layout (ETG.1000.6 SDO complete access); masters "
+        "read and write sub-indices one at a time otherwise, and the process image is laid out by PDO entries, not "
+        "by this layout. Real catalogues carry such offline layouts (BitOffs all 0, a typo in one offset, a struct "
+        "BitSize left smaller than every user of the type declares), so this is a warning; where an InitCmd writes "
+        "such a type by complete access, od-layout-complete-access reports an error. Overlaps are checked between "
+        "sub-indices (SubItems with SubIdx) only, since SoE dictionaries describe unions with overlapping structure "
+        "members; one finding per DataType and kind.",
     .bad_example =
         "<DataType><Name>DT2000</Name><BitSize>32</BitSize><SubItem><Name>A</Name><Type>UINT</Type><BitSize>16</BitSize>"
         "<BitOffs>16</BitOffs></SubItem><SubItem><Name>B</Name><Type>UINT</Type><BitSize>16</BitSize><BitOffs>24</BitOffs>…",
@@ -247,6 +228,54 @@ constexpr Rule od_subitem_layout{
         "<DataType><Name>DT2000</Name><BitSize>48</BitSize><SubItem><Name>A</Name><Type>UINT</Type><BitSize>16</BitSize>"
         "<BitOffs>16</BitOffs></SubItem><SubItem><Name>B</Name><Type>UINT</Type><BitSize>16</BitSize><BitOffs>32</BitOffs>…",
     .check = check_subitem_layout,
+};
+
+void check_layout_complete_access(const EsiDocument& document, RuleContext& context) {
+    for (const auto& info : document.infos)
+        for (const auto& device : info.devices) {
+            const Dictionary* dictionary = device.dictionary();
+            if (!dictionary || !device.mailbox || !device.mailbox->coe) continue;
+            const TypeIndex& types = context.cache().types(dictionary);
+            const DictionaryIndex& objects = context.cache().objects(dictionary);
+            for (const auto& cmd : device.mailbox->coe->init_cmds) {
+                if (!cmd.complete_access.value_or(false) || !cmd.index) continue;
+                const Object* object = objects.object(*cmd.index);
+                if (!object) continue;
+                const DataType* type = types.find(trim(object->type));
+                if (!type) continue;
+                const LayoutFaults faults = layout_faults(*type);
+                if (!faults.any()) continue;
+                const DataTypeSubItem& item = faults.past_end ? *faults.past_end : *faults.overlapping;
+                context.report(cmd.pos,
+                               "CoE InitCmd writes " + object_address(*cmd.index) + " by complete access, but DataType " + type->name +
+                                   " of that object " +
+                                   (faults.past_end ? "has a SubItem past its BitSize" : std::string("has overlapping sub-indices")) +
+                                   "; the bytes transferred are packed by a layout the description gets wrong",
+                               {context.note(item.pos, "the faulty SubItem")});
+            }
+        }
+}
+
+constexpr Rule od_layout_complete_access{
+    .id = "od-layout-complete-access",
+    .default_severity = Severity::error,
+    .summary = "A CoE InitCmd writes by complete access an object whose DataType layout is faulty",
+    .rationale =
+        "An SDO download with complete access transfers all sub-indices of a record at once, packed by the record's "
+        "layout (ETG.1000.6 SDO complete access; ETG.2000 InitCmd@CompleteAccess). Configuration tools compose and show "
+        "such a start-up command by the DataType's BitOffs and BitSize; when SubItems overlap or one lies past the "
+        "type's BitSize, the data the master downloads do not match the object the device has, and the device "
+        "aborts the SDO (0x06070010 'length of service parameter does not match') or stores values in the wrong "
+        "sub-indices. The same faulty layout without a complete-access write is od-subitem-layout's warning.",
+    .bad_example =
+        "<DataType><Name>DT8000</Name><BitSize>32</BitSize><SubItem><SubIdx>1</SubIdx>…<BitSize>16</BitSize><BitOffs>16</BitOffs>"
+        "</SubItem><SubItem><SubIdx>2</SubIdx>…<BitSize>16</BitSize><BitOffs>16</BitOffs>… <InitCmd CompleteAccess=\"1\">"
+        "<Index>#x8000</Index>",
+    .good_example =
+        "<DataType><Name>DT8000</Name><BitSize>48</BitSize><SubItem><SubIdx>1</SubIdx>…<BitSize>16</BitSize><BitOffs>16</BitOffs>"
+        "</SubItem><SubItem><SubIdx>2</SubIdx>…<BitSize>16</BitSize><BitOffs>32</BitOffs>… <InitCmd CompleteAccess=\"1\">"
+        "<Index>#x8000</Index>",
+    .check = check_layout_complete_access,
 };
 
 // ---- od-array-size --------------------------------------------------------------------------
@@ -383,6 +412,7 @@ void add_od_type(std::vector<Rule>& out) {
         od_nonstandard_type_name,
         od_type_cycle,
         od_subitem_layout,
+        od_layout_complete_access,
         od_array_size,
         od_bitsize,
         od_duplicate_datatype,
