@@ -47,7 +47,7 @@ TEST(PdoRules, UnreadableEntryIndexIsNeitherPaddingNorAnObject) {
     const auto report = lint_text(xml);
     EXPECT_EQ(findings_of(report, "xml-number-format").size(), 1u);
     EXPECT_TRUE(findings_of(report, "pdo-padding-subindex").empty());
-    const auto type = findings_of(report, "pdo-entry-type-unknown");
+    const auto type = findings_of(report, "pdo-entry-type-spelling");
     ASSERT_EQ(type.size(), 1u);
     EXPECT_EQ(type[0].message, "Entry 'controlword' has DataType 'UINT16', which is not an ESI type name; the standard name is 'UINT'");
 }

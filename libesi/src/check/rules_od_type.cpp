@@ -127,14 +127,15 @@ void check_nonstandard_type_name(const EsiDocument& document, RuleContext& conte
 
 constexpr Rule od_nonstandard_type_name{
     .id = "od-nonstandard-type-name",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "A type named with a non-standard spelling (UINT16 instead of UINT)",
     .rationale =
         "ESI type names are the IEC 61131-3 style names of ETG.2000 and ET9300 Table 22 (USINT, UINT, UDINT, SINT, "
-        "INT, DINT, BOOL, REAL, …). C-style spellings such as UINT8/UINT16/UINT32 or CoE names such as UNSIGNED16 are "
-        "not understood by TwinCAT or the conformance test tool; generators such as pollen-robotics/pyesi emit them. "
-        "The message names the standard spelling. A Dictionary may define a DataType of such a name; only names that "
-        "nothing defines are reported.",
+        "INT, DINT, BOOL, REAL, …). C-style and TwinCAT spellings such as UINT8/UINT16/UINT32 or CoE names such as "
+        "UNSIGNED16 name the same types (generators such as pollen-robotics/pyesi emit them), so the object's size "
+        "and layout are known; tools that only know the standard names lose the offline type. A vendor spelling in "
+        "the offline Dictionary: a warning that names the standard spelling, like pdo-entry-type-spelling for PDO "
+        "entries. A Dictionary may define a DataType of such a name; only names that nothing defines are reported.",
     .bad_example = "<Object><Index>#x6041</Index><Type>UINT16</Type><BitSize>16</BitSize></Object>",
     .good_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize></Object>",
     .check = check_nonstandard_type_name,
