@@ -338,12 +338,15 @@ void check_size_range(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule sm_size_range{
     .id = "sm-size-range",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "SM sizes outside MinSize <= DefaultSize <= MaxSize",
     .rationale =
-        "MinSize and MaxSize bound the length a master may configure, and DefaultSize is what it uses without a "
-        "reason to change it (ETG.2000 Sm attributes). A default outside the bounds, or MinSize above MaxSize, leaves "
-        "no valid configuration; configuration tools clamp differently.",
+        "MinSize and MaxSize bound the length a user may configure in a configuration tool, and DefaultSize is what "
+        "the master starts the SyncManager with (ETG.2000 Sm attributes; the SII builder writes DefaultSize into the "
+        "SII mailbox words, which IgH and SOEM take). A default outside the bounds, or MinSize above MaxSize, leaves no "
+        "consistent range to edit in, and configuration tools clamp differently; the device still runs with "
+        "DefaultSize (Beckhoff FC1100: MaxSize 256 with DefaultSize 1024, the SM addresses laid out for 1024). "
+        "Inconsistent but tolerated: a warning. A DefaultSize that does not fit the ESC memory is sm-overlap's error.",
     .bad_example =
         "<Sm MinSize=\"34\" MaxSize=\"128\" DefaultSize=\"256\" StartAddress=\"#x1000\" ControlByte=\"#x26\" "
         "Enable=\"1\">MBoxOut</Sm>",
