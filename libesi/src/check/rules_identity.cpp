@@ -208,7 +208,7 @@ constexpr Rule identity_revision_missing{
     .check = check_revision_missing,
 };
 
-// ---- identity-group-type-unresolved ---------------------------------------------------------
+// ---- identity-group-type-unresolved, identity-group-type-missing ----------------------------
 
 // Suggestions cost an edit distance per group; real files have a few dozen groups, and a hostile
 // file with thousands of unresolved references must not turn the check quadratic.
@@ -220,11 +220,7 @@ void check_group_type(const EsiDocument& document, RuleContext& context) {
         group_types.reserve(info.groups.size());
         for (const auto& g : info.groups) group_types.push_back(g.type);
         for (const auto& device : info.devices) {
-            if (!device.group_type) {
-                context.report(device.pos, device_label(device) + " has no GroupType; it must name a Groups/Group/Type of this file");
-                continue;
-            }
-            if (info.find_group(*device.group_type)) continue;
+            if (!device.group_type || info.find_group(*device.group_type)) continue;
             std::string message = device_label(device) + ": GroupType '" + *device.group_type + "' names no Group in this file";
             if (info.groups.empty()) {
                 message += " (the file declares no Groups)";
@@ -239,16 +235,40 @@ void check_group_type(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule identity_group_type_unresolved{
     .id = "identity-group-type-unresolved",
-    .default_severity = Severity::error,
-    .summary = "Device GroupType missing or naming no Group of the file",
+    .default_severity = Severity::warning,
+    .summary = "Device GroupType naming no Group of the file",
     .rationale =
-        "Device/GroupType is required and refers to Descriptions/Groups/Group/Type; configuration tools sort the "
-        "device into that group and take the group's name and image from it (ETG.2000 DeviceType; SOES "
-        "doc/tutorial.txt: 'Reference to a group ... Groups:Group:Type'; CTT TF-1300 1-8). The schema declares no "
-        "key/keyref for it, so only a semantic check finds a misspelt group.",
+        "Device/GroupType refers to Descriptions/Groups/Group/Type; configuration tools sort the device into that "
+        "group and take the group's name and image from it (ETG.2000 DeviceType; SOES doc/tutorial.txt: 'Reference "
+        "to a group ... Groups:Group:Type'; CTT TF-1300 1-8). The schema declares no key/keyref for it, so only a "
+        "semantic check finds a misspelt group. Only the device tree of a configuration tool is affected: the SII "
+        "group string is the GroupType text either way, and no master uses it to configure the device (Synapticon's "
+        "SOMANET files keep the GroupType ETG2001ModulesSlots of the ETG example they were made from). A warning; a "
+        "missing GroupType is identity-group-type-missing.",
     .bad_example = "<Group><Type>DigitalIO</Type>...</Group> ... <GroupType>DigitalIo</GroupType>",
     .good_example = "<Group><Type>DigitalIO</Type>...</Group> ... <GroupType>DigitalIO</GroupType>",
     .check = check_group_type,
+};
+
+void check_group_type_missing(const EsiDocument& document, RuleContext& context) {
+    for (const auto& info : document.infos)
+        for (const auto& device : info.devices)
+            if (!device.group_type)
+                context.report(device.pos, device_label(device) + " has no GroupType; it must name a Groups/Group/Type of this file");
+}
+
+constexpr Rule identity_group_type_missing{
+    .id = "identity-group-type-missing",
+    .default_severity = Severity::error,
+    .summary = "Device without GroupType",
+    .rationale =
+        "Device/GroupType is a required element of the ETG schema (EtherCATInfo.xsd DeviceType: GroupType without "
+        "minOccurs=\"0\"), checked by the conformance tool (CTT TF-1300 1-8 'Device:GroupType'); the SII builder "
+        "takes the SII group string from it (ETG.2010 General category). Files dumped from a live device by the "
+        "IgH master's `ethercat xml` command lack it. A value the schema does not allow: an error.",
+    .bad_example = "<Device Physics=\"YY\"><Type …>EX-DIO-8</Type><Name>EX-DIO-8</Name><Sm …",
+    .good_example = "<Device Physics=\"YY\"><Type …>EX-DIO-8</Type><Name>EX-DIO-8</Name><GroupType>DigitalIO</GroupType><Sm …",
+    .check = check_group_type_missing,
 };
 
 // ---- identity-name-missing ------------------------------------------------------------------
@@ -477,6 +497,7 @@ void add_identity(std::vector<Rule>& out) {
         identity_product_code_missing,
         identity_revision_missing,
         identity_group_type_unresolved,
+        identity_group_type_missing,
         identity_name_missing,
         identity_duplicate,
         identity_1018_mismatch,
