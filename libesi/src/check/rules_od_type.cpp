@@ -9,6 +9,7 @@
 #include "check/areas.hpp"
 #include "check/od_layout_faults.hpp"
 #include "check/od_scope.hpp"
+#include "check/od_type_sizes.hpp"
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
 #include "check/rule_cache.hpp"
@@ -283,44 +284,38 @@ constexpr Rule od_layout_complete_access{
 
 void check_array_size(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex& types = context.cache().types(scope.dictionary);
+        const DataTypeSizes& sizes = context.cache().type_sizes(*scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
-            if (type.array_info.empty()) continue;
-            const ArrayInfo& first = type.array_info.front();
-            std::uint64_t elements = 1;
-            bool valid = true;
-            for (const auto& info : type.array_info) {
-                // Elements 0 with BitSize 0 is an empty list (Beckhoff's DT1C12ARR of a device
-                // without RxPdos) and consistent; a negative count is not.
-                if (info.elements < 0) {
-                    context.report(info.pos, "ArrayInfo of DataType " + type.name + " has Elements " + std::to_string(info.elements) +
-                                                 "; the element count cannot be negative");
-                    valid = false;
-                    break;
-                }
-                elements *= static_cast<std::uint64_t>(info.elements);
+            const ArraySize& size = sizes.array(type);
+            if (size.fit == ArrayFit::negative) {
+                context.report(size.negative->pos, "ArrayInfo of DataType " + type.name + " has Elements " +
+                                                       std::to_string(size.negative->elements) + "; the element count cannot be negative");
+                continue;
             }
-            if (!valid || type.bit_size == 0 || !type.base_type) continue;
-            const std::optional<std::uint64_t> element_bits = types.bit_size(*type.base_type);
-            if (!element_bits || *element_bits == 0) continue;
-            if (elements * *element_bits == type.bit_size) continue;
-            context.report(first.pos, "DataType " + type.name + " has " + std::to_string(elements) + " elements of " + std::string(trim(*type.base_type)) +
-                                          " (" + bits_text(*element_bits) + " each, " + bits_text(elements * *element_bits) +
-                                          ") but BitSize " + std::to_string(type.bit_size));
+            if (size.fit != ArrayFit::mismatch) continue;
+            context.report(type.array_info.front().pos,
+                           "DataType " + type.name + " has " + std::to_string(size.elements) + " elements of " +
+                               std::string(trim(*type.base_type)) + " (" + bits_text(size.element_bits) + " each, " +
+                               bits_text(size.elements * size.element_bits) + ") but BitSize " + std::to_string(type.bit_size));
         }
     }
 }
 
 constexpr Rule od_array_size{
     .id = "od-array-size",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "An array DataType whose ArrayInfo disagrees with its BitSize",
     .rationale =
         "An array type's BitSize is the number of elements (ArrayInfo/Elements) times the size of its BaseType "
-        "(ETG.2000 ArrayInfo). When they disagree, the number of sub-indices or their offsets is wrong; KickCAT "
-        "rejects such types ('array BitSize not divisible by elements', test "
-        "throws_on_array_bitsize_not_divisible_by_elements). Elements 0 with BitSize 0 (an empty PDO assignment list) "
-        "is consistent.",
+        "(ETG.2000 ArrayInfo). When they disagree, the number of sub-indices or their offsets in the offline "
+        "Dictionary is wrong; KickCAT rejects such types ('array BitSize not divisible by elements', test "
+        "throws_on_array_bitsize_not_divisible_by_elements). A type is judged with its users: an SoE list's element "
+        "array may have the size of the whole list record, 32 bits more for the current and maximum length words "
+        "(the list format of IEC 61800-7-204 that SoE carries; Beckhoff AX5 dictionaries), when every user is the "
+        "Elements SubItem of such a record and declares the elements alone; arrays of BOOL/BITn may be rounded up to "
+        "whole bytes; Elements 0 with BitSize 0 (an empty PDO assignment list) is consistent. Masters read and write "
+        "array sub-indices one at a time and lay out process data by PDO entries, so an inconsistent offline array "
+        "is a warning.",
     .bad_example =
         "<DataType><Name>DT1C12ARR</Name><BaseType>UINT</BaseType><BitSize>48</BitSize><ArrayInfo><LBound>1</LBound>"
         "<Elements>2</Elements></ArrayInfo></DataType>",
