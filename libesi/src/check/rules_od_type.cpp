@@ -330,6 +330,14 @@ constexpr Rule od_array_size{
 void check_bitsize(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
+        const DataTypeSizes& sizes = context.cache().type_sizes(*scope.dictionary);
+        // A user's size that differs from a DataType whose own BitSize is the cause (an array
+        // od-array-size reports, a struct od-subitem-layout finds too small) or is a convention
+        // (SoE list, whole bytes) is not reported again: one finding per cause.
+        const auto type_accounts_for_users = [&](std::string_view name) {
+            const DataType* t = types.find(trim(name));
+            return t && sizes.own_size_accounts_for_users(*t);
+        };
         for (const auto& type : scope.dictionary->data_types) {
             // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
             if (type.bit_size > 0 && types.find(type.name) == &type) {
@@ -341,7 +349,7 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
             for (const auto& item : type.sub_items) {
                 if (item.bit_size == 0 || trim(item.type).empty()) continue;
                 const std::optional<std::uint64_t> bits = types.bit_size(item.type);
-                if (!bits || *bits == item.bit_size) continue;
+                if (!bits || *bits == item.bit_size || type_accounts_for_users(item.type)) continue;
                 context.report(item.pos, "SubItem '" + item.name + "' of DataType " + type.name + " has BitSize " + std::to_string(item.bit_size) +
                                              " but its type " + std::string(trim(item.type)) + " is " + bits_text(*bits));
             }
@@ -349,7 +357,7 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
         for (const auto& object : scope.dictionary->objects) {
             if (object.bit_size == 0 || object.bit_size_pos.line == 0 || trim(object.type).empty()) continue;
             const std::optional<std::uint64_t> bits = types.bit_size(object.type);
-            if (!bits || *bits == object.bit_size) continue;
+            if (!bits || *bits == object.bit_size || type_accounts_for_users(object.type)) continue;
             context.report(object.bit_size_pos, "Object " + object_address(object.index) + " has BitSize " + std::to_string(object.bit_size) +
                                                     " but its type " + std::string(trim(object.type)) + " is " + bits_text(*bits));
         }
@@ -364,7 +372,10 @@ constexpr Rule od_bitsize{
         "BitSize states the size of the object or sub-item; the type states it too (UINT is 16 bits, STRING(10) 80, a "
         "DataType its own BitSize; ET9300 Table 22, ETG.2000 ObjectType/BitSize). When they differ, SDO uploads, "
         "complete access and generated object tables disagree about the object's length. A DataType named like a "
-        "basic type (Beckhoff lists <DataType><Name>UINT</Name><BitSize>16</BitSize>) must have that size.",
+        "basic type (Beckhoff lists <DataType><Name>UINT</Name><BitSize>16</BitSize>) must have that size. Where the "
+        "DataType's own BitSize is the cause (an array od-array-size reports, a structure whose SubItems run past its "
+        "BitSize, which od-subitem-layout reports) or a convention explains it (an SoE list's element array, BOOL "
+        "arrays in whole bytes), its users are not reported again.",
     .bad_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>32</BitSize></Object>",
     .good_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize></Object>",
     .check = check_bitsize,
