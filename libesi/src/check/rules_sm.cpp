@@ -464,15 +464,17 @@ void check_1c00(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule sm_1c00_mismatch{
     .id = "sm-1c00-mismatch",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "0x1C00 communication types disagree with the Sm list",
     .rationale =
         "0x1C00 sub n gives the type of SM n-1: 1 mailbox receive, 2 mailbox send, 3 process data output, 4 process "
         "data input, 0 unused (ETG.1000.6 object 0x1C00; the item C series and Afag SE-Power EtherCAT manuals "
-        "§6.1.2.2). Masters read it over SDO to decide which SM carries the PDO assignment 0x1C12/0x1C13; a copy that "
-        "disagrees with the Sm elements makes the master configure the wrong SM. Swapped SM2/SM3 types in "
-        "SSC-generated firmware kept devices out of OP (OpenEtherCATsociety/SOEM #401). Defaults are read from "
-        "DefaultValue or DefaultData.",
+        "§6.1.2.2). Masters configure the SyncManagers from the ESI Sm elements or the SII SyncM category, and those "
+        "that consult 0x1C00 read it from the device over SDO, never from these offline defaults; a default that "
+        "disagrees with the Sm list is a stale copy (Beckhoff CU2508, a mailbox-only device, still lists SM2/SM3 as "
+        "process-data SMs). Where the ESI and the firmware come from the same generator, it can also announce a "
+        "firmware whose own 0x1C00 is wrong: swapped SM2/SM3 types in SSC-generated firmware kept devices out of OP "
+        "(OpenEtherCATsociety/SOEM #401). A warning. Defaults are read from DefaultValue or DefaultData.",
     .bad_example =
         "<Sm ...>Outputs</Sm> (SM2) ... 0x1C00 <SubItem><Name>SubIndex 003</Name><Info><DefaultValue>4</DefaultValue>",
     .good_example =
