@@ -224,36 +224,79 @@ constexpr Rule pdo_sm_direction{
     .check = check_sm_direction,
 };
 
-// ---- pdo-duplicate-index --------------------------------------------------------------------
+// ---- pdo-duplicate-index, pdo-duplicate-label ----------------------------------------------
 
-void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
+// Whether two PDOs of one index name one CoE mapping object: both exist in the device (not
+// Virtual, which TwinCAT maps from ESC registers) and the owner has CoE, where the index is the
+// mapping object's and 0x1C12/0x1C13 assign PDOs by it. A module's PDOs are CoE mapping objects.
+bool index_names_one_mapping_object(const PdoScope& scope, const Pdo& a, const Pdo& b) {
+    if (a.is_virtual.value_or(false) || b.is_virtual.value_or(false)) return false;
+    return !scope.device || (scope.device->mailbox && scope.device->mailbox->coe);
+}
+
+// Calls f(scope, pdo, first) for every PDO whose index an earlier PDO of its owner already uses.
+template <class F>
+void for_each_repeated_index(const EsiDocument& document, F&& f) {
     for (const auto& scope : pdo_scopes(document)) {
         std::map<std::uint32_t, const Pdo*> seen;
         scope.for_each_pdo([&](const Pdo& pdo) {
             if (!has_index(pdo)) return;
             const auto [it, inserted] = seen.emplace(pdo.index, &pdo);
-            if (inserted) return;
-            const Pdo& first = *it->second;
-            context.report(pdo.index_pos,
-                           std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is already used by " +
-                               (first.direction == pdo.direction ? "another " : "a ") + std::string(first.element_name()) +
-                               (scope.device ? " of this device" : " of this module"),
-                           {context.note(index_or_element(first), "first declared here")});
+            if (!inserted) f(scope, pdo, *it->second);
         });
     }
+}
+
+void report_repeated_index(RuleContext& context, const PdoScope& scope, const Pdo& pdo, const Pdo& first, std::string_view consequence) {
+    context.report(pdo.index_pos,
+                   std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is already used by " +
+                       (first.direction == pdo.direction ? "another " : "a ") + std::string(first.element_name()) +
+                       (scope.device ? " of this device" : " of this module") + std::string(consequence),
+                   {context.note(index_or_element(first), "first declared here")});
+}
+
+void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
+    for_each_repeated_index(document, [&](const PdoScope& scope, const Pdo& pdo, const Pdo& first) {
+        if (index_names_one_mapping_object(scope, pdo, first)) report_repeated_index(context, scope, pdo, first, "");
+    });
 }
 
 constexpr Rule pdo_duplicate_index{
     .id = "pdo-duplicate-index",
     .default_severity = Severity::error,
-    .summary = "Two PDOs of one device or module share an index",
+    .summary = "Two PDOs of one CoE device or module share an index",
     .rationale =
         "A PDO index names one mapping object; two PDOs with the same index cannot both be assigned, and a master keeps "
         "only one of them (KickCAT warns on duplicate PDO indices; ETG.1000.6 one object per index). RxPdo and TxPdo "
-        "share the index space.",
-    .bad_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1600</Index>…</RxPdo>",
-    .good_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1601</Index>…</RxPdo>",
+        "share the index space. Where no index is written to the device (no CoE, or a Virtual PDO that TwinCAT maps "
+        "from ESC registers), the repeat is pdo-duplicate-label's warning.",
+    .bad_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1600</Index>…</RxPdo> … <CoE/>",
+    .good_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1601</Index>…</RxPdo> … <CoE/>",
     .check = check_duplicate_index,
+};
+
+void check_duplicate_label(const EsiDocument& document, RuleContext& context) {
+    for_each_repeated_index(document, [&](const PdoScope& scope, const Pdo& pdo, const Pdo& first) {
+        if (!index_names_one_mapping_object(scope, pdo, first))
+            report_repeated_index(context, scope, pdo, first, "; no index is written to the device, but Exclude and OpMode "
+                                                              "references to it are ambiguous");
+    });
+}
+
+constexpr Rule pdo_duplicate_label{
+    .id = "pdo-duplicate-label",
+    .default_severity = Severity::warning,
+    .summary = "Two PDOs share an index where the index is only a label (no CoE, or a Virtual PDO)",
+    .rationale =
+        "A device without CoE has no mapping objects, and a Virtual PDO (ETG.2000 PdoType@Virtual) is mapped by TwinCAT "
+        "from ESC registers rather than assigned: no master writes these indices to the device, and the process "
+        "image follows the PDOs' SM assignment and entries (Beckhoff EL2252: a virtual RxPdo 0x1602 'DC Sync "
+        "Activate' beside an empty mandatory RxPdo 0x1602 'Reserved'). The index still names the PDO in the SII PDO "
+        "category, in Exclude lists and in Dc/OpMode Sm/Pdo references, which become ambiguous: a warning. Where CoE "
+        "assigns PDOs by index, it is pdo-duplicate-index's error.",
+    .bad_example = "<RxPdo Virtual=\"true\"><Index>#x1602</Index>…</RxPdo><RxPdo><Index>#x1602</Index>…</RxPdo>",
+    .good_example = "<RxPdo Virtual=\"true\"><Index>#x1602</Index>…</RxPdo><RxPdo><Index>#x1604</Index>…</RxPdo>",
+    .check = check_duplicate_label,
 };
 
 // ---- pdo-exclude-unknown --------------------------------------------------------------------
@@ -350,6 +393,7 @@ void add_pdo_structure(std::vector<Rule>& out) {
         pdo_sm_unknown,
         pdo_sm_direction,
         pdo_duplicate_index,
+        pdo_duplicate_label,
         pdo_exclude_unknown,
         pdo_mapping_limits,
     });
