@@ -50,11 +50,22 @@ std::string_view typical_control_byte(SmRole role) {
 // bytes 0x0F00, 0x0F01 … next to each other (EL2xxx, EK18xx, EM2xxx): no buffers are laid out there.
 constexpr std::uint32_t process_memory_start = 0x1000;
 
+// Whether the ESC's PDI is digital I/O: SII word 0 (ConfigData byte 0, PDI control register
+// 0x0140) = 0x04 (ESC datasheet section II, PDI control). Such an ESC moves the I/O bytes itself;
+// the 1-byte SMs that Beckhoff's digital terminals put on them take one byte each, and they sit at
+// consecutive addresses.
+bool has_digital_io_pdi(const Device& device) {
+    if (!device.eeprom || !device.eeprom->config_data) return false;
+    const std::string_view text = device.eeprom->config_data->text;
+    return text.size() >= 2 && text[0] == '0' && text[1] == '4';
+}
+
 // A mailbox SM counts as one buffer even when its ControlByte says buffered: that fault is
 // sm-mailbox-mode's, and counting it again as an overlap would report one fault twice.
-bool occupies_three_buffers(const Device& device, const SyncManager& sm) {
+bool occupies_three_buffers(const Device& device, const SyncManager& sm, std::uint64_t size) {
     if (sm.start_address && *sm.start_address < process_memory_start) return false;
     if (role_is_mailbox(device_sm_role(device, sm))) return false;
+    if (size == 1 && has_digital_io_pdi(device)) return false;
     return sm.control_byte ? (*sm.control_byte & 0x03) == 0x00 : true;
 }
 
@@ -241,7 +252,7 @@ void check_overlap(const EsiDocument& document, RuleContext& context) {
             if (!sm.start_address || (sm.is_virtual && *sm.is_virtual)) continue;
             const std::uint64_t size = effective_size(*device, n);
             if (size == 0) continue;
-            ranges.push_back({n, *sm.start_address, size, *sm.start_address + size * (occupies_three_buffers(*device, sm) ? 3 : 1)});
+            ranges.push_back({n, *sm.start_address, size, *sm.start_address + size * (occupies_three_buffers(*device, sm, size) ? 3 : 1)});
         }
         std::sort(ranges.begin(), ranges.end(), [](const SmRange& a, const SmRange& b) {
             return a.start != b.start ? a.start < b.start : a.number < b.number;
@@ -271,7 +282,8 @@ constexpr Rule sm_overlap{
         "SM's size is that of the PDOs assigned to it by default, since the master computes it from them, else "
         "DefaultSize; a mailbox SM counts once (a buffered mailbox is sm-mailbox-mode's finding). SMs below 0x1000, "
         "in the register area (Beckhoff terminals put 1-byte buffered SMs on the digital I/O bytes 0x0F00, 0x0F01), "
-        "count once as well.",
+        "count once as well, and so do 1-byte SMs of a device whose PDI is digital I/O (ConfigData byte 0 = 0x04, PDI "
+        "control register 0x0140): the ESC moves those I/O bytes itself, one byte each.",
     .bad_example =
         "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
         "<Sm StartAddress=\"#x1140\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
