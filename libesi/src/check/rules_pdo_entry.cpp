@@ -158,6 +158,35 @@ constexpr Rule pdo_padding_subindex{
     .check = check_padding_subindex,
 };
 
+// ---- pdo-padding-bitlen-zero ----------------------------------------------------------------
+
+void check_padding_bitlen_zero(const EsiDocument& document, RuleContext& context) {
+    for_each_entry(document, [&](const PdoScope&, const Pdo& pdo, const PdoEntry& entry) {
+        // BitLen 0 without a BitLen element is a missing BitLen, which the reader reports.
+        if (!entry.is_padding() || entry.bit_len != 0 || entry.bit_len_pos.line == 0) return;
+        context.report(entry.bit_len_pos, "Padding entry (Index 0) of " + std::string(pdo.element_name()) + " " + object_address(pdo.index) +
+                                              " has BitLen 0; it fills no gap, and a master that writes the mapping "
+                                              "downloads an entry of length 0");
+    });
+}
+
+constexpr Rule pdo_padding_bitlen_zero{
+    .id = "pdo-padding-bitlen-zero",
+    .default_severity = Severity::warning,
+    .summary = "A padding entry (Index 0) with BitLen 0",
+    .rationale =
+        "A padding entry reserves BitLen bits of a PDO to align what follows (mapped as 0x0000:00 with the gap's "
+        "length; OpenEtherCATsociety/SOEM #297). With BitLen 0 it reserves nothing, yet it is still a mapping entry: "
+        "it counts in the mapping object's sub-index 0 and in the SII PDO category, and a master that configures the "
+        "mapping (CoE PdoConfig) downloads an entry of length 0, which a slave stack may refuse like any mapping "
+        "entry it does not expect (ETG.1000.6 PDO mapping). The process image is the same with or without it: a "
+        "warning; remove the entry. Generators leave such entries when the data already ends on a byte boundary "
+        "(Beckhoff BKxxxxModules.xml, module KL9191, in DiamondLightSource/ethercat etc/xml/).",
+    .bad_example = "<Entry><Index>#x0</Index><BitLen>0</BitLen></Entry>",
+    .good_example = "<Entry><Index>#x0</Index><BitLen>2</BitLen></Entry> (or no entry)",
+    .check = check_padding_bitlen_zero,
+};
+
 // ---- pdo-entry-alignment --------------------------------------------------------------------
 
 void check_entry_alignment(const EsiDocument& document, RuleContext& context) {
@@ -205,6 +234,7 @@ void add_pdo_entry(std::vector<Rule>& out) {
         pdo_entry_type_spelling,
         pdo_entry_bitlen_type,
         pdo_padding_subindex,
+        pdo_padding_bitlen_zero,
         pdo_entry_alignment,
     });
 }

@@ -351,8 +351,8 @@ void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
                     context.report(pdo.pos, pdo_name(pdo) + " has " + std::to_string(pdo.entries.size()) +
                                                 " entries; a PDO mapping object holds at most 255");
                 for (const auto& entry : pdo.entries) {
-                    // BitLen 0 maps nothing. Beckhoff ships it on padding entries (a zero-width
-                    // gap, harmless); on an object it is a corrupt mapping entry.
+                    // BitLen 0 maps nothing. On a padding entry it leaves the image as it is
+                    // (pdo-padding-bitlen-zero); on an object it is a corrupt mapping entry.
                     if (entry.bit_len == 0 && !entry.is_padding() && entry.bit_len_pos.line) {
                         context.report(entry.bit_len_pos, entry_label(entry) +
                                                               " has BitLen 0; a mapping entry maps 1 to 255 bits of its object, "
@@ -377,8 +377,8 @@ constexpr Rule pdo_mapping_limits{
         "The CoE mapping objects count their entries in the 8-bit sub-index 0 and store each entry's length in 8 "
         "bits; the assignment objects 0x1C1x likewise list at most 255 PDOs (ETG.1000.6 PDO mapping/assignment; the "
         "SII PDO category of ETG.2010 has one-byte counts too). leducp/KickCAT rejects such files ('>255 entries', "
-        "'BitLen > 255'). A BitLen of 0 on an object maps nothing; padding entries with BitLen 0 (a zero-width gap, "
-        "as in Beckhoff BKxxxxModules.xml in DiamondLightSource/ethercat etc/xml/) are harmless and not reported.",
+        "'BitLen > 255'). A BitLen of 0 on an object maps nothing; a padding entry with BitLen 0 leaves the process "
+        "image as it is and is pdo-padding-bitlen-zero's warning.",
     .bad_example = "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>512</BitLen>…</Entry>",
     .good_example = "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>32</BitLen>…</Entry>",
     .check = check_mapping_limits,
