@@ -326,6 +326,49 @@ constexpr Rule sm_size_zero{
     .check = check_size_zero,
 };
 
+// ---- sm-default-size-pdo --------------------------------------------------------------------
+
+void check_default_size_pdo(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        // Slot devices get their PDOs (and so their SM sizes) from the plugged modules.
+        if (device->slots) continue;
+        for (std::size_t n = 0; n < device->sms.size(); ++n) {
+            const SyncManager& sm = device->sms[n];
+            if (!sm.default_size || *sm.default_size == 0 || sm.is_virtual.value_or(false)) continue;
+            const SmRole role = device_sm_role(*device, sm);
+            if (role != SmRole::outputs && role != SmRole::inputs) continue;
+            // A lower bound: an oversampling PDO (OSFac) is counted once.
+            const std::uint64_t pdo_bytes = default_pdo_bytes(*device, n);
+            if (pdo_bytes <= *sm.default_size) continue;
+            context.report(sm.pos, sm_label(sm, n) + " has DefaultSize " + std::to_string(*sm.default_size) +
+                                       " but the PDOs assigned to it by default (Sm=\"" + std::to_string(n) + "\") carry at least " +
+                                       std::to_string(pdo_bytes) + " bytes; a tool that starts the SM with DefaultSize cuts "
+                                       "the process data short");
+        }
+    }
+}
+
+constexpr Rule sm_default_size_pdo{
+    .id = "sm-default-size-pdo",
+    .default_severity = Severity::warning,
+    .summary = "A process-data SM whose DefaultSize is smaller than its default PDOs",
+    .rationale =
+        "DefaultSize is the length an SM starts with (ETG.2000 Sm@DefaultSize; the SII builder copies it into the SII "
+        "SyncM category). Masters size a process-data SM from the PDOs assigned to it, so they still exchange all of "
+        "it (SOEM recomputes the SM length from the PDO mapping; TwinCAT from the PDO assignment), but a tool that "
+        "takes the SyncM category as it stands cuts the data short, and the value is plainly stale: Beckhoff's "
+        "EL4102 revision 0x03F8 has DefaultSize 2 for 4 bytes of outputs, revision 0x03F9 has 4. A warning. A "
+        "DefaultSize larger than the PDOs is not reported: it is the room the firmware reserves (the largest mapping "
+        "it accepts). DefaultSize 0 is sm-size-zero's concern, and slot devices take their PDOs from modules.",
+    .bad_example =
+        "<Sm DefaultSize=\"2\" StartAddress=\"#x1100\" ControlByte=\"#x24\" Enable=\"1\">Outputs</Sm> … <RxPdo Sm=\"2\"> "
+        "(two INT entries)",
+    .good_example =
+        "<Sm DefaultSize=\"4\" StartAddress=\"#x1100\" ControlByte=\"#x24\" Enable=\"1\">Outputs</Sm> … <RxPdo Sm=\"2\"> "
+        "(two INT entries)",
+    .check = check_default_size_pdo,
+};
+
 // ---- sm-size-range --------------------------------------------------------------------------
 
 void check_size_range(const EsiDocument& document, RuleContext& context) {
@@ -505,6 +548,7 @@ void add_sm(std::vector<Rule>& out) {
         sm_overlap,
         sm_size_zero,
         sm_size_range,
+        sm_default_size_pdo,
         sm_mailbox_size,
         sm_1c00_mismatch,
     });
