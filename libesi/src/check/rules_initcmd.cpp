@@ -388,6 +388,49 @@ constexpr Rule initcmd_read_only_target{
     .check = check_read_only_target,
 };
 
+// ---- initcmd-pdo-transition -----------------------------------------------------------------
+
+// The PDO assignment (0x1C12, 0x1C13) and mapping objects (RxPDO 0x1600-0x17FF, TxPDO
+// 0x1A00-0x1BFF) of ETG.1000.6.
+bool is_pdo_configuration(std::uint32_t index) {
+    return index == 0x1C12 || index == 0x1C13 || (index >= 0x1600 && index <= 0x17FF) || (index >= 0x1A00 && index <= 0x1BFF);
+}
+
+// Transitions whose commands the master sends while the device is in Pre-Operational.
+bool sent_in_pre_operational(std::string_view transition) { return transition == "IP" || transition == "PS"; }
+
+void check_pdo_transition(const EsiDocument& document, RuleContext& context) {
+    for_each_init_cmd(document, [&](const InitCmdSite& site) {
+        if (site.protocol != Protocol::coe || !site.cmd->index || !is_pdo_configuration(*site.cmd->index)) return;
+        for (const auto& t : site.cmd->transitions) {
+            // Unknown transitions and those down to Init or into Bootstrap, which masters do not
+            // send, are the other initcmd-transition rules' findings.
+            if (sent_in_pre_operational(t.text) || !contains(init_cmd_transitions, t.text)) continue;
+            context.report(t.pos, describe(site) + " configures PDOs at transition " + t.text +
+                                      "; the PDO assignment and mapping can only be written in Pre-Operational (IP or PS), "
+                                      "and the slave answers with SDO abort 0x08000022 so the transition fails");
+        }
+    });
+}
+
+constexpr Rule initcmd_pdo_transition{
+    .id = "initcmd-pdo-transition",
+    .default_severity = Severity::error,
+    .summary = "An InitCmd writes the PDO assignment or mapping outside Pre-Operational (not at IP or PS)",
+    .rationale =
+        "The PDO assignment objects 0x1C12/0x1C13 and the mapping objects 0x1600-0x17FF/0x1A00-0x1BFF may only be "
+        "changed in Pre-Operational; in Safe-Operational and Operational the process data are running and the slave "
+        "refuses the download with SDO abort 0x08000022 'data cannot be transferred or stored because of the present "
+        "device state' (ETG.1000.6 PDO mapping and assignment, SDO abort codes; SOES soes/esc_coe.c answers so for "
+        "objects writable in Pre-Operational only, ATYPE_RWpre, as its applications declare the PDO objects). Commands at IP and PS are sent while the device is in "
+        "Pre-Operational; at SP, SO, OS or OP the master stops the start-up with the abort.",
+    .bad_example =
+        "<InitCmd><Transition>SO</Transition><Index>#x1C12</Index><SubIndex>0</SubIndex><Data>00</Data></InitCmd>",
+    .good_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x1C12</Index><SubIndex>0</SubIndex><Data>00</Data></InitCmd>",
+    .check = check_pdo_transition,
+};
+
 }  // namespace
 
 void add_initcmd(std::vector<Rule>& out) {
@@ -399,6 +442,7 @@ void add_initcmd(std::vector<Rule>& out) {
         initcmd_data_length,
         initcmd_target_missing,
         initcmd_read_only_target,
+        initcmd_pdo_transition,
     });
 }
 
