@@ -210,14 +210,15 @@ void check_mailbox_position(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule sm_mailbox_position{
     .id = "sm-mailbox-position",
-    .default_severity = Severity::warning,
+    .default_severity = Severity::error,
     .summary = "Mailbox SMs not at SM0 (out) and SM1 (in)",
     .rationale =
         "The standard mailbox uses SM0 for master -> slave (MBoxOut) and SM1 for slave -> master (MBoxIn): the SII "
-        "standard mailbox words 0x18-0x1B and 0x1C00:01/02 describe exactly these two, and masters such as SOEM "
-        "program SM0/SM1 as the mailbox from those words (SOES tutorial; the item C series and Afag SE-Power EtherCAT "
-        "manuals §6.1.1: SM0 is the mailbox for incoming SDOs, SM1 the one for outgoing SDOs). The n-th Sm element is "
-        "SMn.",
+        "standard mailbox words 0x18-0x1B and 0x1C00:01/02 describe exactly these two, and masters program SM0 and SM1 "
+        "as the mailbox from those words whatever the description's order (SOEM ecx_config_init sets SM[0]/SM[1] from "
+        "the SII mailbox offsets; SOES tutorial; the item C series and Afag SE-Power EtherCAT manuals §6.1.1: SM0 is "
+        "the mailbox for incoming SDOs, SM1 the one for outgoing SDOs). A device describing its mailbox on other SMs "
+        "is configured differently from what it declares: an error. The n-th Sm element is SMn.",
     .bad_example =
         "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... "
         "ControlByte=\"#x22\">MBoxIn</Sm>",
@@ -438,14 +439,15 @@ void check_mailbox_size(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule sm_mailbox_size{
     .id = "sm-mailbox-size",
-    .default_severity = Severity::warning,
+    .default_severity = Severity::error,
     .summary = "Mailbox SM without DefaultSize or too small",
     .rationale =
         "The standard mailbox offset and size in SII words 0x18-0x1B come from the MBoxOut/MBoxIn SMs' StartAddress "
         "and DefaultSize (ETG.2010; CTT TF-1300 2-12), so a mailbox SM without DefaultSize yields a mailbox of 0 "
-        "bytes. A mailbox message is a 6-byte header plus data; an expedited CoE SDO needs 6 + 2 + 8 = 16 bytes "
-        "(ETG.1000.6 mailbox and SDO layout; STÖBER ECS 5000 manual §7.2 'Mailbox-Header 6 Byte, CoE-Header 2 Byte, "
-        "Expedited SDO-Message 8 Byte').",
+        "bytes, which masters take as no mailbox at all (SOEM configures the mailbox SMs only when the SII mailbox "
+        "length is above 0). A mailbox message is a 6-byte header plus data; an expedited CoE SDO needs 6 + 2 + 8 = 16 "
+        "bytes (ETG.1000.6 mailbox and SDO layout; STÖBER ECS 5000 manual §7.2 'Mailbox-Header 6 Byte, CoE-Header 2 "
+        "Byte, Expedited SDO-Message 8 Byte'). Either way no mailbox protocol works: an error.",
     .bad_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" Enable=\"1\">MBoxOut</Sm>",
     .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
     .check = check_mailbox_size,

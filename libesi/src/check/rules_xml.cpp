@@ -50,9 +50,11 @@ constexpr Rule xml_hex_prefix{
     .default_severity = Severity::warning,
     .summary = "Hex number written with the C prefix 0x",
     .rationale =
-        "ESI hex numbers are written `#x…`; `0x…` is not a valid HexDecValue and strict parsers (and the ETG "
-        "schema) reject it. esi-lint accepts it so the rest of the file can be checked (ETG.2000 schema, "
-        "HexDecValue; XzuluX/EtherCAT.NET #48 shows parsers that expect one notation only).",
+        "ESI hex numbers are written `#x…`; `0x…` is not a valid HexDecValue, so the ETG schema rejects it and "
+        "parsers that expect one notation may fail on it (ETG.2000 schema, HexDecValue; XzuluX/EtherCAT.NET #48 shows "
+        "parsers that expect one notation only). The value itself is unambiguous: a vendor spelling, a warning. "
+        "esi-lint reads the number all the same, so the rest of the file is checked; a number that cannot be read "
+        "(`#x0x607F`) is xml-number-format's error.",
     .bad_example = "<Id>0xF3F</Id>",
     .good_example = "<Id>#xF3F</Id>",
 };
