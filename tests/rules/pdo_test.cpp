@@ -52,6 +52,20 @@ TEST(PdoRules, UnreadableEntryIndexIsNeitherPaddingNorAnObject) {
     EXPECT_EQ(type[0].message, "Entry 'controlword' has DataType 'UINT16', which is not an ESI type name; the standard name is 'UINT'");
 }
 
+TEST(PdoRules, LegacyRefPdosAreOneFindingPerFileNotAMissingIndexEach) {
+    // Before ETG.2000 a PDO named its description with Ref= (Beckhoff EtherCAT_Terminals).
+    const std::string xml = one_device(std::string(esi::test::standard_sms) +
+                                       "        <RxPdo Ref=\"AX2000Out\" Fixed=\"1\" Sm=\"2\"/>\n"
+                                       "        <TxPdo Ref=\"AX2000In\" Fixed=\"1\" Sm=\"3\"/>\n"
+                                       "        <TxPdo Sm=\"3\"><Name>No index, no reference</Name></TxPdo>\n");
+    const auto report = lint_text(xml);
+    const auto legacy = findings_of(report, "pdo-legacy-ref");
+    ASSERT_EQ(legacy.size(), 1u);
+    EXPECT_NE(legacy[0].message.find("and so do 1 more PDO of this file"), std::string::npos) << legacy[0].message;
+    // Only the PDO with neither Index nor Ref misses its Index.
+    EXPECT_EQ(findings_of(report, "xml-missing-element").size(), 1u);
+}
+
 TEST(PdoRules, The256thPdoOfADirectionIsReportedOnce) {
     std::string pdos;
     for (int i = 0; i < 256; ++i) {

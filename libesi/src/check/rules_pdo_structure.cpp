@@ -331,6 +331,49 @@ constexpr Rule pdo_exclude_unknown{
     .check = check_exclude_unknown,
 };
 
+// ---- pdo-legacy-ref -------------------------------------------------------------------------
+
+// A PDO of the form before ETG.2000: no Index and no entries, only Ref="name" of a description kept
+// elsewhere (<RxPdo Ref="AX2000Out" Fixed="1" Sm="0"/>).
+const XmlAttribute* legacy_ref(const Pdo& pdo) {
+    if (pdo.index_pos.line != 0 || !pdo.entries.empty()) return nullptr;
+    return pdo.extras.attribute("Ref");
+}
+
+void check_legacy_ref(const EsiDocument& document, RuleContext& context) {
+    const Pdo* first = nullptr;
+    std::size_t count = 0;
+    for (const auto& scope : pdo_scopes(document))
+        scope.for_each_pdo([&](const Pdo& pdo) {
+            if (!legacy_ref(pdo)) return;
+            if (!first) first = &pdo;
+            ++count;
+        });
+    if (!first) return;
+    // One finding per file: the form is the file's, not one PDO's fault.
+    std::string message = std::string(first->element_name()) + " Ref=\"" + legacy_ref(*first)->value +
+                          "\" describes its layout by a pre-ETG.2000 reference";
+    if (count > 1) message += ", and so do " + std::to_string(count - 1) + " more PDO" + (count > 2 ? "s" : "") + " of this file";
+    message += "; no tool has the referenced descriptions, so the process image cannot be taken from this file";
+    context.report(first->pos, std::move(message));
+}
+
+constexpr Rule pdo_legacy_ref{
+    .id = "pdo-legacy-ref",
+    .default_severity = Severity::error,
+    .summary = "PDOs given by a pre-ETG.2000 Ref= instead of Index and entries (once per file)",
+    .rationale =
+        "Since ETG.2000 a PDO carries its Index and its entries (ETG.2000 PdoType: Index is required). Files from "
+        "before it name a PDO description kept elsewhere instead (<RxPdo Ref=\"AX2000Out\" Fixed=\"1\" Sm=\"0\"/>, "
+        "Beckhoff's EtherCAT_Terminals catalogue); those descriptions are in no file a tool has, so neither a master "
+        "nor the SII builder can take the process image from the description, and the schema rejects the PDO. An "
+        "error, reported once per file with the number of such PDOs rather than once per PDO, since the form is the "
+        "file's.",
+    .bad_example = "<RxPdo Ref=\"AX2000Out\" Fixed=\"1\" Mandatory=\"1\" Sm=\"0\"/>",
+    .good_example = "<RxPdo Fixed=\"1\" Mandatory=\"1\" Sm=\"0\"><Index>#x1600</Index><Name>Outputs</Name><Entry>…</Entry></RxPdo>",
+    .check = check_legacy_ref,
+};
+
 // ---- pdo-mapping-limits ---------------------------------------------------------------------
 
 void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
@@ -394,6 +437,7 @@ void add_pdo_structure(std::vector<Rule>& out) {
         pdo_sm_direction,
         pdo_duplicate_index,
         pdo_duplicate_label,
+        pdo_legacy_ref,
         pdo_exclude_unknown,
         pdo_mapping_limits,
     });

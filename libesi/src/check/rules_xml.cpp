@@ -87,7 +87,8 @@ constexpr Rule xml_missing_element{
     .summary = "An element the schema requires is missing",
     .rationale =
         "A PDO without Index, an Entry without BitLen or an Object without Index cannot be mapped or addressed; "
-        "the ETG schema requires these elements (ETG.2000 PdoType, EntryType, ObjectType).",
+        "the ETG schema requires these elements (ETG.2000 PdoType, EntryType, ObjectType). A PDO of the form before "
+        "ETG.2000, which names its description with Ref= instead, is pdo-legacy-ref's finding, once per file.",
     .bad_example = "<RxPdo Sm=\"2\"><Name>Outputs</Name></RxPdo>",
     .good_example = "<RxPdo Sm=\"2\"><Index>#x1600</Index><Name>Outputs</Name></RxPdo>",
 };
