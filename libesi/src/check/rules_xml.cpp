@@ -100,7 +100,8 @@ constexpr Rule xml_unknown_root{
     .rationale =
         "An ESI file starts with EtherCATInfo (or EtherCATModule, EtherCATDict, EtherCATInfoList); anything else "
         "is not a device description (ETG.2000 §4; schema files EtherCATInfo.xsd, EtherCATModule.xsd, "
-        "EtherCATDict.xsd).",
+        "EtherCATDict.xsd). EtherCATDiag, the root of ETG diagnosis-message files (EtherCATDiag.xsd, shipped with the "
+        "ETG schema), is an ETG root too: it is read without a finding and has no device to check.",
     .bad_example = "<DeviceInfo>…</DeviceInfo>",
     .good_example = "<EtherCATInfo Version=\"1.17\">…</EtherCATInfo>",
 };
