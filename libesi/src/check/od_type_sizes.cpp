@@ -19,12 +19,7 @@ bool has_list_header(const DataType& record, const DataTypeSubItem& elements) {
 }
 }  // namespace
 
-DataTypeSizes::DataTypeSizes(const Dictionary& dictionary, const TypeIndex& types) : types_(types) {
-    for (const auto& type : dictionary.data_types)
-        for (const auto& item : type.sub_items)
-            if (item.bit_size > 0) users_[trim(item.type)].push_back(Use{&item, &type, item.bit_size});
-    for (const auto& object : dictionary.objects)
-        if (object.bit_size > 0) users_[trim(object.type)].push_back(Use{nullptr, nullptr, object.bit_size});
+DataTypeSizes::DataTypeSizes(const Dictionary& dictionary, const TypeIndex& types) : dictionary_(dictionary), types_(types) {
     for (const auto& type : dictionary.data_types)
         if (!type.array_info.empty()) arrays_.emplace(&type, judge(type));
 }
@@ -35,7 +30,15 @@ const ArraySize& DataTypeSizes::array(const DataType& type) const {
     return it == arrays_.end() ? none : it->second;
 }
 
-bool DataTypeSizes::used_as_soe_list(const DataType& type, std::uint64_t element_data_bits) const {
+bool DataTypeSizes::used_as_soe_list(const DataType& type, std::uint64_t element_data_bits) {
+    if (!users_built_) {
+        users_built_ = true;
+        for (const auto& t : dictionary_.data_types)
+            for (const auto& item : t.sub_items)
+                if (item.bit_size > 0) users_[trim(item.type)].push_back(Use{&item, &t, item.bit_size});
+        for (const auto& object : dictionary_.objects)
+            if (object.bit_size > 0) users_[trim(object.type)].push_back(Use{nullptr, nullptr, object.bit_size});
+    }
     const auto it = users_.find(type.name);
     if (it == users_.end() || it->second.empty()) return false;
     for (const Use& use : it->second)
@@ -45,7 +48,7 @@ bool DataTypeSizes::used_as_soe_list(const DataType& type, std::uint64_t element
     return true;
 }
 
-ArraySize DataTypeSizes::judge(const DataType& type) const {
+ArraySize DataTypeSizes::judge(const DataType& type) {
     ArraySize out;
     out.elements = 1;
     for (const auto& info : type.array_info) {

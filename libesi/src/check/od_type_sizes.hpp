@@ -54,11 +54,15 @@ private:
         const DataType* owner = nullptr;
         std::uint64_t bit_size = 0;
     };
-    [[nodiscard]] ArraySize judge(const DataType& type) const;
-    [[nodiscard]] bool used_as_soe_list(const DataType& type, std::uint64_t element_data_bits) const;
+    [[nodiscard]] ArraySize judge(const DataType& type);
+    [[nodiscard]] bool used_as_soe_list(const DataType& type, std::uint64_t element_data_bits);
 
+    const Dictionary& dictionary_;
     const TypeIndex& types_;
-    std::unordered_map<std::string_view, std::vector<Use>> users_;  // by the type name they use
+    // The SubItems and Objects by the type name they use, built when the first array could be an
+    // SoE list (only SoE dictionaries have such arrays; others never pay for the map).
+    std::unordered_map<std::string_view, std::vector<Use>> users_;
+    bool users_built_ = false;
     std::unordered_map<const DataType*, ArraySize> arrays_;
 };
 

@@ -203,17 +203,18 @@ void for_each_missing_mandatory_object(const EsiDocument& document, F&& f) {
 // and the ESI Dictionary is an offline extract.
 bool has_sdo_info(const Device& device) { return device.mailbox->coe->sdo_info.value_or(false); }
 
-std::string missing_message(const MandatoryObject& mandatory) {
-    return "the device has a CoE mailbox, but its Dictionary has no object " + object_address(mandatory.index) + " (" +
-           std::string(mandatory.name) + "), which every CoE device must have";
+// Reports the missing mandatory objects of the devices with (or without) SDO information.
+void report_missing_mandatory(const EsiDocument& document, RuleContext& context, bool sdo_info, std::string_view consequence) {
+    for_each_missing_mandatory_object(document, [&](const Device& device, const Dictionary& dictionary, const MandatoryObject& mandatory) {
+        if (has_sdo_info(device) != sdo_info) return;
+        context.report(dictionary.pos, "the device has a CoE mailbox, but its Dictionary has no object " + object_address(mandatory.index) +
+                                           " (" + std::string(mandatory.name) + "), which every CoE device must have; " +
+                                           std::string(consequence));
+    });
 }
 
 void check_mandatory_object(const EsiDocument& document, RuleContext& context) {
-    for_each_missing_mandatory_object(document, [&](const Device& device, const Dictionary& dictionary, const MandatoryObject& mandatory) {
-        if (!has_sdo_info(device))
-            context.report(dictionary.pos, missing_message(mandatory) + "; without SDO information this Dictionary is all a "
-                                                                        "configuration tool knows of it");
-    });
+    report_missing_mandatory(document, context, false, "without SDO information this Dictionary is all a configuration tool knows of it");
 }
 
 constexpr Rule od_mandatory_object{
@@ -234,11 +235,7 @@ constexpr Rule od_mandatory_object{
 };
 
 void check_mandatory_object_offline(const EsiDocument& document, RuleContext& context) {
-    for_each_missing_mandatory_object(document, [&](const Device& device, const Dictionary& dictionary, const MandatoryObject& mandatory) {
-        if (has_sdo_info(device))
-            context.report(dictionary.pos, missing_message(mandatory) + "; the device has SDO information, so tools read it "
-                                                                        "from the device");
-    });
+    report_missing_mandatory(document, context, true, "the device has SDO information, so tools read it from the device");
 }
 
 constexpr Rule od_mandatory_object_offline{
