@@ -67,14 +67,18 @@ TEST(CorpusRegressions, SoeDictionariesDefineTheirOwnTypesAndUnions) {
 
 TEST(CorpusRegressions, RealDefectsAreStillFound) {
     ESI_REQUIRE_CORPUS();
-    // C-style DataType names (pollen-robotics/pyesi output).
-    EXPECT_FALSE(findings_of(lint_corpus_file("PollenRobotics__NeckOrbita3d_fw1.5__poulpe.xml"), "pdo-entry-type-unknown").empty());
+    // C-style DataType names (pollen-robotics/pyesi output): a spelling warning naming the standard type.
+    EXPECT_FALSE(findings_of(lint_corpus_file("PollenRobotics__NeckOrbita3d_fw1.5__poulpe.xml"), "pdo-entry-type-spelling").empty());
     // PDO entries that map the mapping object 0x1600 itself instead of 0x6040 …
     EXPECT_GT(count_containing(lint_corpus_file("Synapticon__Somanet_CiA402-multi__siitool__2022.xml"), "pdo-entry-object-missing",
                                "maps object #x1600"),
               0u);
     // An output object flagged 't' mapped into an RxPdo.
     EXPECT_FALSE(findings_of(lint_corpus_file("CSUFT__RT2000__wgy4188-EtherCAT-Slave.xml"), "pdo-entry-not-mappable").empty());
+    // CX2040: the mailbox SMs overlap (MBoxOut #x1000 and MBoxIn #x1200, both 1024 bytes).
+    EXPECT_GT(count_containing(lint_corpus_file("Beckhoff__CXxxxx__dls-ethercat.xml"), "sm-overlap", "MBoxIn"), 0u);
+    // FB1111/FB1311 MCI DC: RxPdo 0x1A00 / TxPdo 0x1600 on a device that assigns and configures PDOs.
+    EXPECT_GT(findings_of(lint_corpus_file("Beckhoff__FB1XXX__dls-ethercat.xml"), "pdo-index-range").size(), 0u);
     // A signed object described as UDINT in a PDO (S17).
     EXPECT_GT(count_containing(lint_corpus_file("Elmo__ECAT_00010420_V11__hw_device_mgr.xml"), "pdo-entry-object-type", "#x60FD"), 0u);
 }

@@ -47,9 +47,23 @@ TEST(PdoRules, UnreadableEntryIndexIsNeitherPaddingNorAnObject) {
     const auto report = lint_text(xml);
     EXPECT_EQ(findings_of(report, "xml-number-format").size(), 1u);
     EXPECT_TRUE(findings_of(report, "pdo-padding-subindex").empty());
-    const auto type = findings_of(report, "pdo-entry-type-unknown");
+    const auto type = findings_of(report, "pdo-entry-type-spelling");
     ASSERT_EQ(type.size(), 1u);
     EXPECT_EQ(type[0].message, "Entry 'controlword' has DataType 'UINT16', which is not an ESI type name; the standard name is 'UINT'");
+}
+
+TEST(PdoRules, LegacyRefPdosAreOneFindingPerFileNotAMissingIndexEach) {
+    // Before ETG.2000 a PDO named its description with Ref= (Beckhoff EtherCAT_Terminals).
+    const std::string xml = one_device(std::string(esi::test::standard_sms) +
+                                       "        <RxPdo Ref=\"AX2000Out\" Fixed=\"1\" Sm=\"2\"/>\n"
+                                       "        <TxPdo Ref=\"AX2000In\" Fixed=\"1\" Sm=\"3\"/>\n"
+                                       "        <TxPdo Sm=\"3\"><Name>No index, no reference</Name></TxPdo>\n");
+    const auto report = lint_text(xml);
+    const auto legacy = findings_of(report, "pdo-legacy-ref");
+    ASSERT_EQ(legacy.size(), 1u);
+    EXPECT_NE(legacy[0].message.find("and so do 1 more PDO of this file"), std::string::npos) << legacy[0].message;
+    // Only the PDO with neither Index nor Ref misses its Index.
+    EXPECT_EQ(findings_of(report, "xml-missing-element").size(), 1u);
 }
 
 TEST(PdoRules, The256thPdoOfADirectionIsReportedOnce) {
@@ -76,8 +90,9 @@ TEST(PdoRules, DuplicateIndexNotePointsAtTheFirstDeclaration) {
     EXPECT_EQ(found[0].pos.line, *lines.rbegin());
     ASSERT_EQ(found[0].notes.size(), 1u);
     EXPECT_EQ(found[0].notes[0].pos.line, *lines.begin());
-    // The same fault is also a TxPdo outside its area: a second rule, not a duplicate finding.
-    EXPECT_EQ(findings_of(lint_text(xml), "pdo-index-range").size(), 1u);
+    // The same fault is also a TxPdo outside its area: a second rule, not a duplicate finding (a
+    // warning, as this CoE neither assigns nor configures PDOs).
+    EXPECT_EQ(findings_of(lint_text(xml), "pdo-index-area").size(), 1u);
 }
 
 TEST(PdoRules, ModuleEntriesWithSlotDependentIndicesAreNotLookedUp) {
@@ -96,8 +111,10 @@ TEST(PdoRules, ModuleEntriesWithSlotDependentIndicesAreNotLookedUp) {
     EXPECT_TRUE(findings_of(report, "pdo-entry-object-missing").empty());
     EXPECT_TRUE(findings_of(report, "pdo-entry-object-bitlen").empty());
     EXPECT_TRUE(findings_of(report, "pdo-sm-unknown").empty()) << "a module's Sm refers to the device's SMs";
-    // Module PDOs are CoE mapping objects too: the RxPdo at #x1A01 is still reported.
-    EXPECT_EQ(findings_of(report, "pdo-index-range").size(), 1u);
+    // Module PDOs are CoE mapping objects too: the RxPdo at #x1A01 is still reported, as a warning
+    // since no device of the file says whether a master writes the index.
+    EXPECT_EQ(findings_of(report, "pdo-index-area").size(), 1u);
+    EXPECT_TRUE(findings_of(report, "pdo-index-range").empty());
 }
 
 TEST(PdoRules, ModularDevicesDoNotRequireEveryMappedObject) {

@@ -1,11 +1,14 @@
 // Every rule with a check has a fixture folder tests/rules/fixtures/<rule-id>/ holding
 //   bad.xml   - the rule must fire exactly on the lines marked <!-- expect: <rule-id> -->
 //   good.xml  - the rule must stay silent
-//   config.yaml (optional) - an .esi-lint.yaml applied to both (for profile-* rules)
+//   bad-<case>.xml, good-<case>.xml (optional) - more cases of either kind, e.g. cut from a real
+//               vendor file: each is held to the same expectation
+//   config.yaml (optional) - an .esi-lint.yaml applied to all of them (for profile-* rules)
 // This test enumerates the catalogue, so a new rule without fixtures fails here.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <sstream>
@@ -61,22 +64,39 @@ std::string describe(const esi::FileReport& report) {
 
 class RuleFixture : public ::testing::TestWithParam<std::string> {};
 
+// bad.xml, bad-*.xml or good.xml, good-*.xml of a fixture folder, sorted by name.
+std::vector<std::filesystem::path> fixture_files(const std::filesystem::path& dir, std::string_view kind) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() != ".xml") continue;
+        if (name == std::string(kind) + ".xml" || name.starts_with(std::string(kind) + "-")) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
 TEST_P(RuleFixture, FiresOnBadAndStaysSilentOnGood) {
     const std::string id = GetParam();
     const auto dir = fixture_dir(id);
     ASSERT_TRUE(std::filesystem::exists(dir / "bad.xml")) << "rule " << id << " has no fixture " << dir / "bad.xml";
     ASSERT_TRUE(std::filesystem::exists(dir / "good.xml")) << "rule " << id << " has no fixture " << dir / "good.xml";
 
-    const std::string bad_text = read_text(dir / "bad.xml");
-    const auto bad = esi::lint_bytes(bad_text, (dir / "bad.xml").string(), config_for(dir, dir / "bad.xml"));
-    const auto expected = expected_lines(bad_text, id);
-    ASSERT_FALSE(expected.empty()) << "bad.xml of " << id << " marks no line with <!-- expect: " << id << " -->";
-    EXPECT_EQ(lines_of(bad, id), expected) << "diagnostics on bad.xml:\n" << describe(bad);
-    for (const auto& d : bad.diagnostics) EXPECT_NE(d.rule, "xml-syntax") << "fixture is not well-formed: " << d.message;
-
-    const auto good = esi::lint_bytes(read_text(dir / "good.xml"), (dir / "good.xml").string(), config_for(dir, dir / "good.xml"));
-    EXPECT_TRUE(lines_of(good, id).empty()) << "diagnostics on good.xml:\n" << describe(good);
-    for (const auto& d : good.diagnostics) EXPECT_NE(d.rule, "xml-syntax") << "fixture is not well-formed: " << d.message;
+    for (const auto& path : fixture_files(dir, "bad")) {
+        SCOPED_TRACE(path.filename().string());
+        const std::string bad_text = read_text(path);
+        const auto bad = esi::lint_bytes(bad_text, path.string(), config_for(dir, path));
+        const auto expected = expected_lines(bad_text, id);
+        ASSERT_FALSE(expected.empty()) << path.filename() << " of " << id << " marks no line with <!-- expect: " << id << " -->";
+        EXPECT_EQ(lines_of(bad, id), expected) << "diagnostics on " << path.filename() << ":\n" << describe(bad);
+        for (const auto& d : bad.diagnostics) EXPECT_NE(d.rule, "xml-syntax") << "fixture is not well-formed: " << d.message;
+    }
+    for (const auto& path : fixture_files(dir, "good")) {
+        SCOPED_TRACE(path.filename().string());
+        const auto good = esi::lint_bytes(read_text(path), path.string(), config_for(dir, path));
+        EXPECT_TRUE(lines_of(good, id).empty()) << "diagnostics on " << path.filename() << ":\n" << describe(good);
+        for (const auto& d : good.diagnostics) EXPECT_NE(d.rule, "xml-syntax") << "fixture is not well-formed: " << d.message;
+    }
 }
 
 std::vector<std::string> checked_rules() {

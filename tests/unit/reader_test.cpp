@@ -235,6 +235,16 @@ TEST(Reader, OtherRoots) {
 
     const auto other = read("<Foo/>");
     EXPECT_NE(find(other, "xml-unknown-root"), nullptr);
+
+    // Diagnosis messages (EtherCATDiag.xsd) are an ETG root that describes no device.
+    const auto diag = read("<EtherCATDiag Version=\"1.0\"><DiagMessages><DiagMessage><TextId>#x0001</TextId>"
+                           "<MessageText><Text>Overtemperature</Text></MessageText></DiagMessage></DiagMessages></EtherCATDiag>");
+    ASSERT_TRUE(diag.document);
+    EXPECT_EQ(diag.document->kind, esi::DocumentKind::ethercat_diag);
+    EXPECT_EQ(find(diag, "xml-unknown-root"), nullptr);
+    EXPECT_TRUE(diag.document->infos.empty());
+    ASSERT_EQ(diag.document->root_extras.elements.size(), 1u);
+    EXPECT_EQ(diag.document->root_extras.elements[0].name, "DiagMessages");
 }
 
 TEST(Reader, HexBinaryWhitespaceIsRemoved) {

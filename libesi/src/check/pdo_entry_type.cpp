@@ -1,5 +1,7 @@
 #include "check/pdo_entry_type.hpp"
 
+#include <string>
+
 #include "esi/number.hpp"
 
 namespace esi::rules {
@@ -25,10 +27,19 @@ EntryType entry_type(const TypeIndex& types, const PdoEntry& entry) {
         out.nonstandard_name = culprit;
         out.standard_name = standard_type_name_for(culprit);
     }
-    out.known = status == TypeNameStatus::resolved && !in_cycle(types, text);
+    // A known spelling (UINT16 for UINT, also inside ARRAY … OF) means its standard type: the other
+    // rules judge the entry as that type.
+    std::string standard;
+    std::string_view resolved = text;
+    if (!out.standard_name.empty()) {
+        const auto at = text.find(culprit);
+        standard = std::string(text.substr(0, at)) + std::string(out.standard_name) + std::string(text.substr(at + culprit.size()));
+        resolved = standard;
+    }
+    out.known = types.status(resolved) == TypeNameStatus::resolved && !in_cycle(types, resolved);
     if (!out.known) return out;
-    out.basic = types.basic(text);
-    out.bit_size = types.bit_size(text).value_or(0);
+    out.basic = types.basic(resolved);
+    out.bit_size = types.bit_size(resolved).value_or(0);
     return out;
 }
 

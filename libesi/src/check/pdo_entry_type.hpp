@@ -15,7 +15,8 @@ namespace esi::rules {
 
 struct EntryType {
     bool present = false;                // a non-empty DataType is written
-    bool known = false;                  // it resolves (basic, STRING(n), array or defined)
+    bool known = false;                  // it resolves (basic, STRING(n), array or defined), a known
+                                         // non-standard spelling as the type it stands for
     const BasicType* basic = nullptr;    // the basic type it ends in, if any
     std::uint64_t bit_size = 0;          // 0 when unknown or variable
     std::string_view nonstandard_name;   // the undefined non-standard spelling (UINT16), also inside ARRAY … OF

@@ -22,4 +22,10 @@ EntryTypes& RuleCache::entry_types(const Dictionary* dictionary) {
     return *e.entry_types;
 }
 
+const DataTypeSizes& RuleCache::type_sizes(const Dictionary& dictionary) {
+    PerDictionary& e = entry(&dictionary);
+    if (!e.type_sizes) e.type_sizes = std::make_unique<DataTypeSizes>(dictionary, *e.types);
+    return *e.type_sizes;
+}
+
 }  // namespace esi::rules

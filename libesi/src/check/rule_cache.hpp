@@ -11,6 +11,7 @@
 #include <unordered_map>
 
 #include "check/od_type_index.hpp"
+#include "check/od_type_sizes.hpp"
 #include "check/pdo_entry_type.hpp"
 #include "check/queries.hpp"
 
@@ -23,12 +24,15 @@ public:
     [[nodiscard]] const DictionaryIndex& objects(const Dictionary* dictionary);
     // What PDO entries' DataTypes mean for an owner with this Dictionary (or none).
     [[nodiscard]] EntryTypes& entry_types(const Dictionary* dictionary);
+    // The DataTypes' sizes as their users see them (a Dictionary, not null).
+    [[nodiscard]] const DataTypeSizes& type_sizes(const Dictionary& dictionary);
 
 private:
     struct PerDictionary {
         std::unique_ptr<TypeIndex> types;
         std::unique_ptr<DictionaryIndex> objects;
         std::unique_ptr<EntryTypes> entry_types;
+        std::unique_ptr<DataTypeSizes> type_sizes;
     };
     PerDictionary& entry(const Dictionary* dictionary);
 

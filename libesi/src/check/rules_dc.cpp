@@ -4,8 +4,9 @@
 // and 0x0981 (high byte, activation): 0x0981 bit 0 activates the cyclic unit, bit 1 generates
 // SYNC0, bit 2 SYNC1 (Beckhoff ESC datasheet section II, "Distributed Clocks"). The usual values,
 // as Beckhoff's catalogues write them: #x0000 free run, #x0300 SYNC0, #x0700 SYNC0 + SYNC1, #x0730.
+#include <limits>
+#include <optional>
 #include <string>
-#include <unordered_map>
 
 #include "check/areas.hpp"
 #include "check/queries.hpp"
@@ -23,23 +24,92 @@ std::string op_mode_label(const DcOpMode& mode) {
     return mode.name.empty() ? std::string("OpMode") : "OpMode '" + mode.name + "'";
 }
 
-// ---- dc-opmode-name -------------------------------------------------------------------------
+// ---- dc-opmode-name, dc-opmode-duplicate ---------------------------------------------------
+
+// The TwinCAT builds an OpMode is offered to: VendorSpecific/TwinCAT@UseFromBuildNo=N from build N
+// on, @IgnoreFromBuildNo=N before build N. Beckhoff describes a changed OpMode as a pair of the
+// same Name, one per build range (EL1xxx: DcSync up to build 1506 and from it), so only one of
+// them is ever listed.
+struct BuildRange {
+    std::uint64_t first = 0;
+    std::uint64_t end = std::numeric_limits<std::uint64_t>::max();  // exclusive
+    [[nodiscard]] bool overlaps(const BuildRange& other) const { return first < other.end && other.first < end; }
+};
+
+BuildRange build_range(const DcOpMode& mode) {
+    BuildRange range;
+    const XmlElement* twincat = mode.extras.find("VendorSpecific/TwinCAT");
+    if (!twincat) return range;
+    const auto build = [&](std::string_view attribute) -> std::optional<std::uint64_t> {
+        const XmlAttribute* a = twincat->attribute(attribute);
+        if (!a) return std::nullopt;
+        const ParsedNumber n = parse_number(a->value);
+        return n.ok() && !n.value.negative ? std::optional<std::uint64_t>(n.value.magnitude) : std::nullopt;
+    };
+    if (const auto n = build("UseFromBuildNo")) range.first = *n;
+    if (const auto n = build("IgnoreFromBuildNo")) range.end = *n;
+    return range;
+}
+
+bool same_time(const std::optional<DcTime>& a, const std::optional<DcTime>& b) {
+    if (!a || !b) return !a && !b;
+    return a->value == b->value && a->factor == b->factor && a->input == b->input && a->output_delay_time == b->output_delay_time &&
+           a->input_delay_time == b->input_delay_time;
+}
+
+bool same_extras(const Extras& a, const Extras& b) {
+    if (a.attributes != b.attributes || a.elements.size() != b.elements.size()) return false;
+    for (std::size_t i = 0; i < a.elements.size(); ++i)
+        if (!same_content(a.elements[i], b.elements[i])) return false;
+    return true;
+}
+
+// Two OpModes that say the same: name, description, AssignActivate, SYNC times, the Sm/Pdo
+// lists and vendor-specific content (compared as content, not as text).
+bool same_op_mode(const DcOpMode& a, const DcOpMode& b) {
+    return a.name == b.name && a.desc == b.desc && a.has_assign_activate == b.has_assign_activate &&
+           a.assign_activate == b.assign_activate && same_time(a.cycle_time_sync0, b.cycle_time_sync0) &&
+           same_time(a.shift_time_sync0, b.shift_time_sync0) && same_time(a.cycle_time_sync1, b.cycle_time_sync1) &&
+           same_time(a.shift_time_sync1, b.shift_time_sync1) && same_extras(a.extras, b.extras);
+}
+
+enum class NameClash { none, duplicate, conflict };
+
+// How `mode` relates to the earlier OpModes of its device with the same Name: offered to other
+// TwinCAT builds (none), repeated word for word (duplicate), or a different mode under the same
+// Name (conflict, the worst one wins). `other` is set to the OpMode it clashes with.
+NameClash name_clash(const Dc& dc, const DcOpMode& mode, const DcOpMode*& other) {
+    NameClash clash = NameClash::none;
+    const BuildRange range = build_range(mode);
+    for (const auto& earlier : dc.op_modes) {
+        if (&earlier == &mode) break;
+        if (earlier.name != mode.name || !range.overlaps(build_range(earlier))) continue;
+        if (!same_op_mode(earlier, mode)) {
+            other = &earlier;
+            return NameClash::conflict;
+        }
+        if (clash == NameClash::none) {
+            clash = NameClash::duplicate;
+            other = &earlier;
+        }
+    }
+    return clash;
+}
 
 void check_name(const EsiDocument& document, RuleContext& context) {
     for (const Device* device : all_devices(document)) {
         if (!device->dc) continue;
-        std::unordered_map<std::string_view, const DcOpMode*> seen;
         for (const auto& mode : device->dc->op_modes) {
             if (mode.name.empty()) {
                 context.report(mode.pos, "Dc OpMode has no Name; masters and modules (DcOpModeName) select an operation "
                                          "mode by its Name");
                 continue;
             }
-            const auto [it, inserted] = seen.emplace(mode.name, &mode);
-            if (!inserted)
-                context.report(mode.pos, "Dc OpMode Name '" + mode.name + "' is used twice in this device; a master "
-                                                                          "selecting it by name gets either one",
-                               {context.note(it->second->pos, "first OpMode with this Name")});
+            const DcOpMode* other = nullptr;
+            if (name_clash(*device->dc, mode, other) == NameClash::conflict)
+                context.report(mode.pos, "Dc OpMode Name '" + mode.name + "' is used twice in this device for different "
+                                                                          "settings; a master selecting it by name gets either one",
+                               {context.note(other->pos, "the other OpMode with this Name")});
         }
     }
 }
@@ -47,15 +117,44 @@ void check_name(const EsiDocument& document, RuleContext& context) {
 constexpr Rule dc_opmode_name{
     .id = "dc-opmode-name",
     .default_severity = Severity::error,
-    .summary = "Dc OpMode without Name or with a repeated Name",
+    .summary = "Dc OpMode without Name, or two different OpModes with the same Name",
     .rationale =
         "Masters list the operation modes by Name and modules select theirs through DcOpModeName, so every OpMode "
-        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required). Beckhoff's EL1262 "
-        "description (Beckhoff EL1xxx.xml in DiamondLightSource/ethercat etc/xml/) has two OpModes named DcSync in "
-        "one device.",
-    .bad_example = "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC</Name>...</OpMode>",
+        "needs a Name that is unique within its device (ETG.2000 Dc/OpMode: Name is required); with two different "
+        "modes of one Name, the master programs the SYNC signals of whichever it finds. OpModes of the same Name that "
+        "TwinCAT offers to disjoint builds (VendorSpecific/TwinCAT@IgnoreFromBuildNo and @UseFromBuildNo, as "
+        "Beckhoff's EL1xxx catalogues describe a changed mode) are distinct; an OpMode repeated word for word is "
+        "dc-opmode-duplicate's warning.",
+    .bad_example = "<OpMode><Name>DC</Name><AssignActivate>#x0300</AssignActivate>…</OpMode><OpMode><Name>DC</Name>"
+                   "<AssignActivate>#x0700</AssignActivate>…</OpMode>",
     .good_example = "<OpMode><Name>DC</Name>...</OpMode><OpMode><Name>DC-Sync01</Name>...</OpMode>",
     .check = check_name,
+};
+
+void check_duplicate(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->dc) continue;
+        for (const auto& mode : device->dc->op_modes) {
+            const DcOpMode* other = nullptr;
+            if (mode.name.empty() || name_clash(*device->dc, mode, other) != NameClash::duplicate) continue;
+            context.report(mode.pos, "Dc OpMode '" + mode.name + "' repeats an earlier OpMode of this device word for word",
+                           {context.note(other->pos, "the same OpMode")});
+        }
+    }
+}
+
+constexpr Rule dc_opmode_duplicate{
+    .id = "dc-opmode-duplicate",
+    .default_severity = Severity::warning,
+    .summary = "A Dc OpMode given twice with identical content",
+    .rationale =
+        "An OpMode repeated with the same Name, AssignActivate, SYNC times and Sm/Pdo lists (Beckhoff EL3632 lists its "
+        "DcSync twice) offers the user the same choice twice; whichever a master picks, it programs the same "
+        "settings (ETG.2000 Dc/OpMode). Harmless for the device, a copy-and-paste slip in the description: a warning. "
+        "Different OpModes of one Name are dc-opmode-name's error.",
+    .bad_example = "<OpMode><Name>DcSync</Name><AssignActivate>#x0730</AssignActivate>…</OpMode> twice",
+    .good_example = "<OpMode><Name>DcSync</Name><AssignActivate>#x0730</AssignActivate>…</OpMode> once",
+    .check = check_duplicate,
 };
 
 // ---- dc-assign-activate ---------------------------------------------------------------------
@@ -172,6 +271,7 @@ constexpr Rule dc_cycle_time{
 void add_dc(std::vector<Rule>& out) {
     out.insert(out.end(), {
         dc_opmode_name,
+        dc_opmode_duplicate,
         dc_assign_activate,
         dc_cycle_time,
     });

@@ -209,7 +209,7 @@ constexpr Rule identity_revision_missing{
     .check = check_revision_missing,
 };
 
-// ---- identity-group-type-unresolved ---------------------------------------------------------
+// ---- identity-group-type-unresolved, identity-group-type-missing ----------------------------
 
 // Suggestions cost an edit distance per group; real files have a few dozen groups, and a hostile
 // file with thousands of unresolved references must not turn the check quadratic.
@@ -221,11 +221,7 @@ void check_group_type(const EsiDocument& document, RuleContext& context) {
         group_types.reserve(info.groups.size());
         for (const auto& g : info.groups) group_types.push_back(g.type);
         for (const auto& device : info.devices) {
-            if (!device.group_type) {
-                context.report(device.pos, device_label(device) + " has no GroupType; it must name a Groups/Group/Type of this file");
-                continue;
-            }
-            if (info.find_group(*device.group_type)) continue;
+            if (!device.group_type || info.find_group(*device.group_type)) continue;
             std::string message = device_label(device) + ": GroupType '" + *device.group_type + "' names no Group in this file";
             if (info.groups.empty()) {
                 message += " (the file declares no Groups)";
@@ -240,16 +236,40 @@ void check_group_type(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule identity_group_type_unresolved{
     .id = "identity-group-type-unresolved",
-    .default_severity = Severity::error,
-    .summary = "Device GroupType missing or naming no Group of the file",
+    .default_severity = Severity::warning,
+    .summary = "Device GroupType naming no Group of the file",
     .rationale =
-        "Device/GroupType is required and refers to Descriptions/Groups/Group/Type; configuration tools sort the "
-        "device into that group and take the group's name and image from it (ETG.2000 DeviceType; SOES "
-        "doc/tutorial.txt: 'Reference to a group ... Groups:Group:Type'; CTT TF-1300 1-8). The schema declares no "
-        "key/keyref for it, so only a semantic check finds a misspelt group.",
+        "Device/GroupType refers to Descriptions/Groups/Group/Type; configuration tools sort the device into that "
+        "group and take the group's name and image from it (ETG.2000 DeviceType; SOES doc/tutorial.txt: 'Reference "
+        "to a group ... Groups:Group:Type'; CTT TF-1300 1-8). The schema declares no key/keyref for it, so only a "
+        "semantic check finds a misspelt group. Only the device tree of a configuration tool is affected: the SII "
+        "group string is the GroupType text either way, and no master uses it to configure the device (Synapticon's "
+        "SOMANET files keep the GroupType ETG2001ModulesSlots of the ETG example they were made from). A warning; a "
+        "missing GroupType is identity-group-type-missing.",
     .bad_example = "<Group><Type>DigitalIO</Type>...</Group> ... <GroupType>DigitalIo</GroupType>",
     .good_example = "<Group><Type>DigitalIO</Type>...</Group> ... <GroupType>DigitalIO</GroupType>",
     .check = check_group_type,
+};
+
+void check_group_type_missing(const EsiDocument& document, RuleContext& context) {
+    for (const auto& info : document.infos)
+        for (const auto& device : info.devices)
+            if (!device.group_type)
+                context.report(device.pos, device_label(device) + " has no GroupType; it must name a Groups/Group/Type of this file");
+}
+
+constexpr Rule identity_group_type_missing{
+    .id = "identity-group-type-missing",
+    .default_severity = Severity::error,
+    .summary = "Device without GroupType",
+    .rationale =
+        "Device/GroupType is a required element of the ETG schema (EtherCATInfo.xsd DeviceType: GroupType without "
+        "minOccurs=\"0\"), checked by the conformance tool (CTT TF-1300 1-8 'Device:GroupType'); the SII builder "
+        "takes the SII group string from it (ETG.2010 General category). Files dumped from a live device by the "
+        "IgH master's `ethercat xml` command lack it. A value the schema does not allow: an error.",
+    .bad_example = "<Device Physics=\"YY\"><Type …>EX-DIO-8</Type><Name>EX-DIO-8</Name><Sm …",
+    .good_example = "<Device Physics=\"YY\"><Type …>EX-DIO-8</Type><Name>EX-DIO-8</Name><GroupType>DigitalIO</GroupType><Sm …",
+    .check = check_group_type_missing,
 };
 
 // ---- identity-name-missing ------------------------------------------------------------------
@@ -364,9 +384,12 @@ void check_1018(const EsiDocument& document, RuleContext& context, IdentityPart 
                 context.report(at,
                                device_label(device) + ": 0x1018:0" + std::to_string(e.subindex) + " (" + entry->name +
                                    ") defaults to " + hex32(*value) + " but " + e.what + " is " + hex32(*e.value) +
-                                   (part == IdentityPart::revision ? "; a master or the conformance tool that compares the "
-                                                                 "identity object with the description reports a mismatch"
-                                                               : "; the identity object must repeat the description's identity"),
+                                   (part == IdentityPart::revision
+                                        ? "; a master or the conformance tool that compares the identity object with the "
+                                          "description reports a mismatch"
+                                        : std::string(*value == 0 ? " (a placeholder left 0)" : "") +
+                                              "; the identity object must repeat the description's identity (masters identify "
+                                              "the device by its SII, and the conformance tool warns)"),
                                {context.note(e.where, std::string(e.what) + " is written here")});
             }
         }
@@ -377,15 +400,19 @@ void check_1018_device(const EsiDocument& document, RuleContext& context) { chec
 
 constexpr Rule identity_1018_mismatch{
     .id = "identity-1018-mismatch",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "0x1018 vendor id or product code defaults disagree with Vendor/Id or Device/Type",
     .rationale =
         "The identity object 0x1018 (sub 1 vendor id, 2 product code, 3 revision) must report the same identity as "
         "the description and the SII; the conformance tool compares them (CTT TF-1300 4-1 'ESI OD Identity Info', "
-        "TF-2301 0x1018). Defaults are read from DefaultValue or from DefaultData, which holds the bytes "
-        "little-endian (\"02000000\" is 2). A copied dictionary that still carries the template's product code is the "
-        "usual cause (ETG sample ModulesSlots_CiA402; generator templates). A stale revision is "
-        "identity-1018-revision-stale.",
+        "graded a warning in the CTT report posted in leducp/KickCAT#189; TF-2301 0x1018). Defaults are read from "
+        "DefaultValue or from DefaultData, which holds the bytes little-endian (\"02000000\" is 2). A copied "
+        "dictionary that still carries the template's product code, a vendor id written in the wrong byte order, or "
+        "a default left 0 are the usual causes (ETG sample ModulesSlots_CiA402; generator templates). A warning, not "
+        "an error: no master reads these offline defaults. Masters match a device by the identity in its SII against "
+        "the description's Vendor/Id and Type (IgH EtherCAT master ec_slave_config_attach() compares "
+        "slave->sii.vendor_id and product_code; SOEM reads the SII), and the device reports its own 0x1018 online. A "
+        "stale revision is identity-1018-revision-stale.",
     .bad_example =
         "<Type ProductCode=\"#x1001\" ...> ... <SubItem><Name>Product code</Name><Info><DefaultData>02100000</DefaultData>",
     .good_example =
@@ -471,6 +498,7 @@ void add_identity(std::vector<Rule>& out) {
         identity_product_code_missing,
         identity_revision_missing,
         identity_group_type_unresolved,
+        identity_group_type_missing,
         identity_name_missing,
         identity_duplicate,
         identity_1018_mismatch,

@@ -325,6 +325,95 @@ constexpr Rule initcmd_data_length{
     .check = check_data_length,
 };
 
+// ---- initcmd-read-only-target ---------------------------------------------------------------
+
+// The Dictionary's access of an object entry: the SubItem's flags, else the object's.
+bool read_only(const ObjectEntry& entry) {
+    if (!entry.flags || !entry.flags->access) return false;
+    const std::string_view access = trim(*entry.flags->access);
+    return access == "ro" || access == "const";
+}
+
+void check_read_only_target(const EsiDocument& document, RuleContext& context) {
+    for_each_coe_target(document, context, [&](const InitCmdSite& site, const DictionaryIndex& index) {
+        const InitCmd& cmd = *site.cmd;
+        // Complete access writes a whole record, whose sub-index 0 is read-only by nature.
+        if (cmd.complete_access.value_or(false)) return;
+        const Object* object = index.object(*cmd.index);
+        const ObjectLayout* layout = object ? index.layout(*cmd.index) : nullptr;
+        const ObjectEntry* entry = layout ? layout->entry(cmd.subindex.value_or(0)) : nullptr;
+        if (!entry || !read_only(*entry)) return;
+        context.report(cmd.pos, describe(site) + " writes " + format_hex(*cmd.index, 4) + ":" + std::to_string(entry->subindex) + " '" +
+                                    entry->name + "', which the Dictionary marks " + std::string(trim(*entry->flags->access)) +
+                                    "; either the offline access flags are stale or the slave answers with SDO abort "
+                                    "0x06010002 'attempt to write a read only object'",
+                       {context.note(entry->flags->pos.known() ? entry->flags->pos : object->pos, "the access is declared here")});
+    });
+}
+
+constexpr Rule initcmd_read_only_target{
+    .id = "initcmd-read-only-target",
+    .default_severity = Severity::warning,
+    .summary = "A CoE InitCmd writes an object entry the Dictionary marks read-only",
+    .rationale =
+        "A CoE InitCmd is an SDO download; an object whose access is ro (or const) refuses it with abort 0x06010002 "
+        "'attempt to write a read only object', and the master stops the start-up (ETG.1000.6 SDO abort codes; "
+        "ETG.2000 ObjectType Flags/Access, the SubItem's flags before the object's). The offline access flags are "
+        "stale often enough that the rule cannot tell which side is wrong (Beckhoff AX2000-B110 writes 0x6060 Modes "
+        "of operation, read-write in CiA 402, while its Dictionary says ro): a warning. Complete-access commands are "
+        "not checked, as a record's sub-index 0 is read-only by nature.",
+    .bad_example =
+        "<Object><Index>#x6061</Index>…<Flags><Access>ro</Access></Flags></Object> … "
+        "<InitCmd><Transition>PS</Transition><Index>#x6061</Index><SubIndex>0</SubIndex><Data>08</Data></InitCmd>",
+    .good_example =
+        "<Object><Index>#x6060</Index>…<Flags><Access>rw</Access></Flags></Object> … "
+        "<InitCmd><Transition>PS</Transition><Index>#x6060</Index><SubIndex>0</SubIndex><Data>08</Data></InitCmd>",
+    .check = check_read_only_target,
+};
+
+// ---- initcmd-pdo-transition -----------------------------------------------------------------
+
+// The PDO assignment (0x1C12, 0x1C13) and mapping objects (RxPDO 0x1600-0x17FF, TxPDO
+// 0x1A00-0x1BFF) of ETG.1000.6.
+bool is_pdo_configuration(std::uint32_t index) {
+    return index == 0x1C12 || index == 0x1C13 || (index >= 0x1600 && index <= 0x17FF) || (index >= 0x1A00 && index <= 0x1BFF);
+}
+
+// Transitions whose commands the master sends while the device is in Pre-Operational.
+bool sent_in_pre_operational(std::string_view transition) { return transition == "IP" || transition == "PS"; }
+
+void check_pdo_transition(const EsiDocument& document, RuleContext& context) {
+    for_each_init_cmd(document, [&](const InitCmdSite& site) {
+        if (site.protocol != Protocol::coe || !site.cmd->index || !is_pdo_configuration(*site.cmd->index)) return;
+        for (const auto& t : site.cmd->transitions) {
+            // Unknown transitions and those down to Init or into Bootstrap, which masters do not
+            // send, are the other initcmd-transition rules' findings.
+            if (sent_in_pre_operational(t.text) || !contains(init_cmd_transitions, t.text)) continue;
+            context.report(t.pos, describe(site) + " configures PDOs at transition " + t.text +
+                                      "; the PDO assignment and mapping can only be written in Pre-Operational (IP or PS), "
+                                      "and the slave answers with SDO abort 0x08000022 so the transition fails");
+        }
+    });
+}
+
+constexpr Rule initcmd_pdo_transition{
+    .id = "initcmd-pdo-transition",
+    .default_severity = Severity::error,
+    .summary = "An InitCmd writes the PDO assignment or mapping outside Pre-Operational (not at IP or PS)",
+    .rationale =
+        "The PDO assignment objects 0x1C12/0x1C13 and the mapping objects 0x1600-0x17FF/0x1A00-0x1BFF may only be "
+        "changed in Pre-Operational; in Safe-Operational and Operational the process data are running and the slave "
+        "refuses the download with SDO abort 0x08000022 'data cannot be transferred or stored because of the present "
+        "device state' (ETG.1000.6 PDO mapping and assignment, SDO abort codes; SOES soes/esc_coe.c answers so for "
+        "objects writable in Pre-Operational only, ATYPE_RWpre, as its applications declare the PDO objects). Commands at IP and PS are sent while the device is in "
+        "Pre-Operational; at SP, SO, OS or OP the master stops the start-up with the abort.",
+    .bad_example =
+        "<InitCmd><Transition>SO</Transition><Index>#x1C12</Index><SubIndex>0</SubIndex><Data>00</Data></InitCmd>",
+    .good_example =
+        "<InitCmd><Transition>PS</Transition><Index>#x1C12</Index><SubIndex>0</SubIndex><Data>00</Data></InitCmd>",
+    .check = check_pdo_transition,
+};
+
 }  // namespace
 
 void add_initcmd(std::vector<Rule>& out) {
@@ -335,6 +424,8 @@ void add_initcmd(std::vector<Rule>& out) {
         initcmd_data_hex,
         initcmd_data_length,
         initcmd_target_missing,
+        initcmd_read_only_target,
+        initcmd_pdo_transition,
     });
 }
 

@@ -42,7 +42,8 @@ constexpr Rule mailbox_data_link_layer{
 
 void check_sm_missing(const EsiDocument& document, RuleContext& context) {
     for (const Device* device : all_devices(document)) {
-        if (!device->mailbox) continue;
+        // A Mailbox that names no protocol declares nothing to carry (mailbox-protocol-missing).
+        if (!device->mailbox || device->mailbox->protocol_bits() == 0) continue;
         bool has_out = false;
         bool has_in = false;
         for (const auto& sm : device->sms) {
@@ -67,7 +68,8 @@ constexpr Rule mailbox_sm_missing{
         "Mailbox protocols travel through the standard mailbox: SM0 (MBoxOut, master -> slave) and SM1 (MBoxIn, slave "
         "-> master), whose addresses and sizes also fill SII words 0x18-0x1B (ETG.2010; SOES tutorial; the item C "
         "series and Afag SE-Power EtherCAT manuals, §6.1.1 and Tabelle 5). A Mailbox element without them advertises "
-        "protocols the master cannot reach.",
+        "protocols the master cannot reach. An empty <Mailbox/> names no protocol, so it needs no mailbox SMs "
+        "(mailbox-protocol-missing reports it).",
     .bad_example = "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Mailbox DataLinkLayer=\"true\"><CoE/></Mailbox>",
     .good_example =
         "<Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... ControlByte=\"#x22\">MBoxIn</Sm>...<Mailbox "

@@ -182,37 +182,75 @@ void for_each_valued_entry(const EsiDocument& document, RuleContext& context, F&
     }
 }
 
-// ---- od-mandatory-object --------------------------------------------------------------------
+// ---- od-mandatory-object, od-mandatory-object-offline --------------------------------------
 
-void check_mandatory_object(const EsiDocument& document, RuleContext& context) {
+// Calls f(device, dictionary, missing object) for every mandatory object a CoE device's own
+// Dictionary lacks. Only a device that describes its CoE dictionary in the ESI can be checked;
+// many devices leave it to SDO information at run time.
+template <class F>
+void for_each_missing_mandatory_object(const EsiDocument& document, F&& f) {
     for (const auto& info : document.infos)
         for (const auto& device : info.devices) {
-            // Only a device that describes its CoE dictionary in the ESI can be checked; many
-            // devices leave it to SDO information at run time.
             if (!device.mailbox || !device.mailbox->coe) continue;
             const Dictionary* dictionary = device.dictionary();
             if (!dictionary || dictionary->objects.empty()) continue;
-            for (const auto& mandatory : mandatory_objects) {
-                if (dictionary->find_object(mandatory.index)) continue;
-                context.report(dictionary->pos, "the device has a CoE mailbox, but its Dictionary has no object " +
-                                                    object_address(mandatory.index) + " (" + std::string(mandatory.name) +
-                                                    "), which every CoE device must have");
-            }
+            for (const auto& mandatory : mandatory_objects)
+                if (!dictionary->find_object(mandatory.index)) f(device, *dictionary, mandatory);
         }
+}
+
+// With SDO information (CoE@SdoInfo) a configuration tool reads the dictionary from the device,
+// and the ESI Dictionary is an offline extract.
+bool has_sdo_info(const Device& device) { return device.mailbox->coe->sdo_info.value_or(false); }
+
+// Reports the missing mandatory objects of the devices with (or without) SDO information.
+void report_missing_mandatory(const EsiDocument& document, RuleContext& context, bool sdo_info, std::string_view consequence) {
+    for_each_missing_mandatory_object(document, [&](const Device& device, const Dictionary& dictionary, const MandatoryObject& mandatory) {
+        if (has_sdo_info(device) != sdo_info) return;
+        context.report(dictionary.pos, "the device has a CoE mailbox, but its Dictionary has no object " + object_address(mandatory.index) +
+                                           " (" + std::string(mandatory.name) + "), which every CoE device must have; " +
+                                           std::string(consequence));
+    });
+}
+
+void check_mandatory_object(const EsiDocument& document, RuleContext& context) {
+    report_missing_mandatory(document, context, false, "without SDO information this Dictionary is all a configuration tool knows of it");
 }
 
 constexpr Rule od_mandatory_object{
     .id = "od-mandatory-object",
     .default_severity = Severity::error,
-    .summary = "A CoE device's Dictionary lacks object 0x1000 or 0x1018",
+    .summary = "The Dictionary of a CoE device without SDO information lacks object 0x1000 or 0x1018",
     .rationale =
-        "Every CoE device has Device type (0x1000) and Identity (0x1018) (ETG.1000.6; CiA 301); the conformance test "
-        "tool reads both (CTT TF-2301) and masters compare 0x1018 with the ESI identity. When the ESI describes the "
-        "Dictionary, it must describe these objects too (SOES tutorial; kubabuda/EEPROM_generator adds both to every "
-        "dictionary it generates). Devices whose ESI has no Dictionary are not checked.",
-    .bad_example = "<Mailbox><CoE/></Mailbox> and a Dictionary with objects but no #x1018",
-    .good_example = "<Mailbox><CoE/></Mailbox> and a Dictionary with #x1000 and #x1018",
+        "Every CoE device has Device type (0x1000) and Identity (0x1018) (ETG.1000.6; CiA 301), and the conformance "
+        "test tool reads both (CTT TF-2301). When the ESI describes the Dictionary, it must describe these objects too "
+        "(SOES tutorial; kubabuda/EEPROM_generator adds both to every dictionary it generates). A device without SDO "
+        "information (CoE@SdoInfo) cannot tell a configuration tool its objects at run time, so the ESI Dictionary is "
+        "the whole description, and one without the mandatory objects describes no conformant device. With SDO "
+        "information it is od-mandatory-object-offline's warning. Devices whose ESI has no Dictionary are not "
+        "checked.",
+    .bad_example = "<Mailbox><CoE SdoInfo=\"false\"/></Mailbox> and a Dictionary with objects but no #x1018",
+    .good_example = "<Mailbox><CoE SdoInfo=\"false\"/></Mailbox> and a Dictionary with #x1000 and #x1018",
     .check = check_mandatory_object,
+};
+
+void check_mandatory_object_offline(const EsiDocument& document, RuleContext& context) {
+    report_missing_mandatory(document, context, true, "the device has SDO information, so tools read it from the device");
+}
+
+constexpr Rule od_mandatory_object_offline{
+    .id = "od-mandatory-object-offline",
+    .default_severity = Severity::warning,
+    .summary = "The offline Dictionary of a CoE device with SDO information lacks object 0x1000 or 0x1018",
+    .rationale =
+        "Every CoE device has Device type (0x1000) and Identity (0x1018) (ETG.1000.6; CiA 301). A device that "
+        "declares SDO information (CoE@SdoInfo, ETG.2000) lists its objects to configuration tools at run time, and "
+        "masters identify it by its SII, not by the ESI's 0x1018; the ESI Dictionary is then an offline extract, and "
+        "one without the mandatory objects is incomplete but misleads no master (Elmo's boot-loader descriptions carry "
+        "such a partial Dictionary). A warning; without SDO information it is od-mandatory-object's error.",
+    .bad_example = "<Mailbox><CoE SdoInfo=\"true\"/></Mailbox> and a Dictionary with objects but no #x1018",
+    .good_example = "<Mailbox><CoE SdoInfo=\"true\"/></Mailbox> and a Dictionary with #x1000 and #x1018",
+    .check = check_mandatory_object_offline,
 };
 
 // ---- od-duplicate-object --------------------------------------------------------------------
@@ -326,6 +364,7 @@ constexpr Rule od_default_range{
 void add_od_object(std::vector<Rule>& out) {
     out.insert(out.end(), {
         od_mandatory_object,
+        od_mandatory_object_offline,
         od_duplicate_object,
         od_flags_value,
         od_default_length,

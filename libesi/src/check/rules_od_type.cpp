@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "check/areas.hpp"
+#include "check/od_layout_faults.hpp"
 #include "check/od_scope.hpp"
+#include "check/od_type_sizes.hpp"
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
 #include "check/rule_cache.hpp"
@@ -126,14 +128,15 @@ void check_nonstandard_type_name(const EsiDocument& document, RuleContext& conte
 
 constexpr Rule od_nonstandard_type_name{
     .id = "od-nonstandard-type-name",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "A type named with a non-standard spelling (UINT16 instead of UINT)",
     .rationale =
         "ESI type names are the IEC 61131-3 style names of ETG.2000 and ET9300 Table 22 (USINT, UINT, UDINT, SINT, "
-        "INT, DINT, BOOL, REAL, …). C-style spellings such as UINT8/UINT16/UINT32 or CoE names such as UNSIGNED16 are "
-        "not understood by TwinCAT or the conformance test tool; generators such as pollen-robotics/pyesi emit them. "
-        "The message names the standard spelling. A Dictionary may define a DataType of such a name; only names that "
-        "nothing defines are reported.",
+        "INT, DINT, BOOL, REAL, …). C-style and TwinCAT spellings such as UINT8/UINT16/UINT32 or CoE names such as "
+        "UNSIGNED16 name the same types (generators such as pollen-robotics/pyesi emit them), so the object's size "
+        "and layout are known; tools that only know the standard names lose the offline type. A vendor spelling in "
+        "the offline Dictionary: a warning that names the standard spelling, like pdo-entry-type-spelling for PDO "
+        "entries. A Dictionary may define a DataType of such a name; only names that nothing defines are reported.",
     .bad_example = "<Object><Index>#x6041</Index><Type>UINT16</Type><BitSize>16</BitSize></Object>",
     .good_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize></Object>",
     .check = check_nonstandard_type_name,
@@ -182,64 +185,44 @@ constexpr Rule od_type_cycle{
     .check = check_type_cycle,
 };
 
-// ---- od-subitem-layout ----------------------------------------------------------------------
+// ---- od-subitem-layout, od-layout-complete-access -----------------------------------------
 
 void check_subitem_layout(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         for (const auto& type : scope.dictionary->data_types) {
-            // Past the end: every SubItem, reported once per DataType (the first in the file).
-            for (const auto& item : type.sub_items) {
-                const std::uint64_t end = item.bit_offset + item.bit_size;
-                if (item.bit_size == 0 || type.bit_size == 0 || end <= type.bit_size) continue;
-                context.report(item.pos, "SubItem '" + item.name + "' ends at bit " + std::to_string(end) + " but DataType " + type.name +
-                                             " has BitSize " + std::to_string(type.bit_size));
-                break;
-            }
-            // Overlaps: only between sub-indices (SubIdx). SubItems without SubIdx are members of
-            // a structure, where SoE dictionaries lay out unions on purpose (Beckhoff
-            // DT_IDN_..._Union).
-            std::vector<const DataTypeSubItem*> items;
-            for (const auto& item : type.sub_items)
-                if (item.bit_size > 0 && item.subindex) items.push_back(&item);
-            std::stable_sort(items.begin(), items.end(),
-                             [](const DataTypeSubItem* a, const DataTypeSubItem* b) { return a->bit_offset < b->bit_offset; });
-            const DataTypeSubItem* reach = nullptr;  // the item that extends furthest so far
-            const DataTypeSubItem* first_item = nullptr;
-            const DataTypeSubItem* first_other = nullptr;
-            std::size_t overlapping = 0;
-            for (const DataTypeSubItem* item : items) {
-                if (reach && item->bit_offset < reach->bit_offset + reach->bit_size) {
-                    if (!first_item) {
-                        first_item = item;
-                        first_other = reach;
-                    }
-                    ++overlapping;
-                }
-                if (!reach || item->bit_offset + item->bit_size > reach->bit_offset + reach->bit_size) reach = item;
-            }
-            if (!first_item) continue;
+            const LayoutFaults faults = layout_faults(type);
+            // Past the end: reported once per DataType, at the first such SubItem in the file.
+            if (const DataTypeSubItem* item = faults.past_end)
+                context.report(item->pos, "SubItem '" + item->name + "' ends at bit " + std::to_string(item->bit_offset + item->bit_size) +
+                                              " but DataType " + type.name + " has BitSize " + std::to_string(type.bit_size));
+            if (!faults.overlapping) continue;
             // One finding per DataType: a type whose BitOffs were never filled in overlaps everywhere.
             const auto bits = [](const DataTypeSubItem& i) {
                 return std::to_string(i.bit_offset) + "-" + std::to_string(i.bit_offset + i.bit_size - 1);
             };
-            std::string message = "SubItem '" + first_item->name + "' (bits " + bits(*first_item) + ") overlaps SubItem '" +
-                                  first_other->name + "' (bits " + bits(*first_other) + ") in DataType " + type.name;
-            if (overlapping > 1) message += " (" + std::to_string(overlapping) + " SubItems overlap others)";
-            context.report(first_item->pos, std::move(message), {context.note(first_other->pos, "the other SubItem")});
+            std::string message = "SubItem '" + faults.overlapping->name + "' (bits " + bits(*faults.overlapping) + ") overlaps SubItem '" +
+                                  faults.overlapped->name + "' (bits " + bits(*faults.overlapped) + ") in DataType " + type.name;
+            if (faults.overlap_count > 1) message += " (" + std::to_string(faults.overlap_count) + " SubItems overlap others)";
+            context.report(faults.overlapping->pos, std::move(message), {context.note(faults.overlapped->pos, "the other SubItem")});
         }
     }
 }
 
 constexpr Rule od_subitem_layout{
     .id = "od-subitem-layout",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "DataType SubItems that overlap or extend past the DataType's BitSize",
     .rationale =
         "The SubItems of a record type are laid out by BitOffs and BitSize inside the type's BitSize (ETG.2000 "
         "DataTypeType). Overlapping SubItems make two sub-entries share bits, and a SubItem past the end reads beyond "
-        "the object; complete-access SDO transfers and generated structs then disagree with the device (ETG.1000.6 "
-        "SDO complete access). Overlaps are checked between sub-indices (SubItems with SubIdx) only, since SoE "
-        "dictionaries describe unions with overlapping structure members; one finding per DataType.",
+        "the object; generated structs and offline tools then disagree with the device. Bit offsets matter only to "
+        "complete access, which transfers a record packed by its layout (ETG.1000.6 SDO complete access); masters "
+        "read and write sub-indices one at a time otherwise, and the process image is laid out by PDO entries, not "
+        "by this layout. Real catalogues carry such offline layouts (BitOffs all 0, a typo in one offset, a struct "
+        "BitSize left smaller than every user of the type declares), so this is a warning; where an InitCmd writes "
+        "such a type by complete access, od-layout-complete-access reports an error. Overlaps are checked between "
+        "sub-indices (SubItems with SubIdx) only, since SoE dictionaries describe unions with overlapping structure "
+        "members; one finding per DataType and kind.",
     .bad_example =
         "<DataType><Name>DT2000</Name><BitSize>32</BitSize><SubItem><Name>A</Name><Type>UINT</Type><BitSize>16</BitSize>"
         "<BitOffs>16</BitOffs></SubItem><SubItem><Name>B</Name><Type>UINT</Type><BitSize>16</BitSize><BitOffs>24</BitOffs>…",
@@ -249,48 +232,90 @@ constexpr Rule od_subitem_layout{
     .check = check_subitem_layout,
 };
 
+void check_layout_complete_access(const EsiDocument& document, RuleContext& context) {
+    for (const auto& info : document.infos)
+        for (const auto& device : info.devices) {
+            const Dictionary* dictionary = device.dictionary();
+            if (!dictionary || !device.mailbox || !device.mailbox->coe) continue;
+            const TypeIndex& types = context.cache().types(dictionary);
+            const DictionaryIndex& objects = context.cache().objects(dictionary);
+            for (const auto& cmd : device.mailbox->coe->init_cmds) {
+                if (!cmd.complete_access.value_or(false) || !cmd.index) continue;
+                const Object* object = objects.object(*cmd.index);
+                if (!object) continue;
+                const DataType* type = types.find(trim(object->type));
+                if (!type) continue;
+                const LayoutFaults faults = layout_faults(*type);
+                if (!faults.any()) continue;
+                const DataTypeSubItem& item = faults.past_end ? *faults.past_end : *faults.overlapping;
+                context.report(cmd.pos,
+                               "CoE InitCmd writes " + object_address(*cmd.index) + " by complete access, but DataType " + type->name +
+                                   " of that object " +
+                                   (faults.past_end ? "has a SubItem past its BitSize" : std::string("has overlapping sub-indices")) +
+                                   "; the bytes transferred are packed by a layout the description gets wrong",
+                               {context.note(item.pos, "the faulty SubItem")});
+            }
+        }
+}
+
+constexpr Rule od_layout_complete_access{
+    .id = "od-layout-complete-access",
+    .default_severity = Severity::error,
+    .summary = "A CoE InitCmd writes by complete access an object whose DataType layout is faulty",
+    .rationale =
+        "An SDO download with complete access transfers all sub-indices of a record at once, packed by the record's "
+        "layout (ETG.1000.6 SDO complete access; ETG.2000 InitCmd@CompleteAccess). Configuration tools compose and show "
+        "such a start-up command by the DataType's BitOffs and BitSize; when SubItems overlap or one lies past the "
+        "type's BitSize, the data the master downloads do not match the object the device has, and the device "
+        "aborts the SDO (0x06070010 'length of service parameter does not match') or stores values in the wrong "
+        "sub-indices. The same faulty layout without a complete-access write is od-subitem-layout's warning.",
+    .bad_example =
+        "<DataType><Name>DT8000</Name><BitSize>32</BitSize><SubItem><SubIdx>1</SubIdx>…<BitSize>16</BitSize><BitOffs>16</BitOffs>"
+        "</SubItem><SubItem><SubIdx>2</SubIdx>…<BitSize>16</BitSize><BitOffs>16</BitOffs>… <InitCmd CompleteAccess=\"1\">"
+        "<Index>#x8000</Index>",
+    .good_example =
+        "<DataType><Name>DT8000</Name><BitSize>48</BitSize><SubItem><SubIdx>1</SubIdx>…<BitSize>16</BitSize><BitOffs>16</BitOffs>"
+        "</SubItem><SubItem><SubIdx>2</SubIdx>…<BitSize>16</BitSize><BitOffs>32</BitOffs>… <InitCmd CompleteAccess=\"1\">"
+        "<Index>#x8000</Index>",
+    .check = check_layout_complete_access,
+};
+
 // ---- od-array-size --------------------------------------------------------------------------
 
 void check_array_size(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex& types = context.cache().types(scope.dictionary);
+        const DataTypeSizes& sizes = context.cache().type_sizes(*scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
-            if (type.array_info.empty()) continue;
-            const ArrayInfo& first = type.array_info.front();
-            std::uint64_t elements = 1;
-            bool valid = true;
-            for (const auto& info : type.array_info) {
-                // Elements 0 with BitSize 0 is an empty list (Beckhoff's DT1C12ARR of a device
-                // without RxPdos) and consistent; a negative count is not.
-                if (info.elements < 0) {
-                    context.report(info.pos, "ArrayInfo of DataType " + type.name + " has Elements " + std::to_string(info.elements) +
-                                                 "; the element count cannot be negative");
-                    valid = false;
-                    break;
-                }
-                elements *= static_cast<std::uint64_t>(info.elements);
+            const ArraySize& size = sizes.array(type);
+            if (size.fit == ArrayFit::negative) {
+                context.report(size.negative->pos, "ArrayInfo of DataType " + type.name + " has Elements " +
+                                                       std::to_string(size.negative->elements) + "; the element count cannot be negative");
+                continue;
             }
-            if (!valid || type.bit_size == 0 || !type.base_type) continue;
-            const std::optional<std::uint64_t> element_bits = types.bit_size(*type.base_type);
-            if (!element_bits || *element_bits == 0) continue;
-            if (elements * *element_bits == type.bit_size) continue;
-            context.report(first.pos, "DataType " + type.name + " has " + std::to_string(elements) + " elements of " + std::string(trim(*type.base_type)) +
-                                          " (" + bits_text(*element_bits) + " each, " + bits_text(elements * *element_bits) +
-                                          ") but BitSize " + std::to_string(type.bit_size));
+            if (size.fit != ArrayFit::mismatch) continue;
+            context.report(type.array_info.front().pos,
+                           "DataType " + type.name + " has " + std::to_string(size.elements) + " elements of " +
+                               std::string(trim(*type.base_type)) + " (" + bits_text(size.element_bits) + " each, " +
+                               bits_text(size.elements * size.element_bits) + ") but BitSize " + std::to_string(type.bit_size));
         }
     }
 }
 
 constexpr Rule od_array_size{
     .id = "od-array-size",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "An array DataType whose ArrayInfo disagrees with its BitSize",
     .rationale =
         "An array type's BitSize is the number of elements (ArrayInfo/Elements) times the size of its BaseType "
-        "(ETG.2000 ArrayInfo). When they disagree, the number of sub-indices or their offsets is wrong; KickCAT "
-        "rejects such types ('array BitSize not divisible by elements', test "
-        "throws_on_array_bitsize_not_divisible_by_elements). Elements 0 with BitSize 0 (an empty PDO assignment list) "
-        "is consistent.",
+        "(ETG.2000 ArrayInfo). When they disagree, the number of sub-indices or their offsets in the offline "
+        "Dictionary is wrong; KickCAT rejects such types ('array BitSize not divisible by elements', test "
+        "throws_on_array_bitsize_not_divisible_by_elements). A type is judged with its users: an SoE list's element "
+        "array may have the size of the whole list record, 32 bits more for the current and maximum length words "
+        "(the list format of IEC 61800-7-204 that SoE carries; Beckhoff AX5 dictionaries), when every user is the "
+        "Elements SubItem of such a record and declares the elements alone; arrays of BOOL/BITn may be rounded up to "
+        "whole bytes; Elements 0 with BitSize 0 (an empty PDO assignment list) is consistent. Masters read and write "
+        "array sub-indices one at a time and lay out process data by PDO entries, so an inconsistent offline array "
+        "is a warning.",
     .bad_example =
         "<DataType><Name>DT1C12ARR</Name><BaseType>UINT</BaseType><BitSize>48</BitSize><ArrayInfo><LBound>1</LBound>"
         "<Elements>2</Elements></ArrayInfo></DataType>",
@@ -305,6 +330,14 @@ constexpr Rule od_array_size{
 void check_bitsize(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
+        const DataTypeSizes& sizes = context.cache().type_sizes(*scope.dictionary);
+        // A user's size that differs from a DataType whose own BitSize is the cause (an array
+        // od-array-size reports, a struct od-subitem-layout finds too small) or is a convention
+        // (SoE list, whole bytes) is not reported again: one finding per cause.
+        const auto type_accounts_for_users = [&](std::string_view name) {
+            const DataType* t = types.find(trim(name));
+            return t && sizes.own_size_accounts_for_users(*t);
+        };
         for (const auto& type : scope.dictionary->data_types) {
             // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
             if (type.bit_size > 0 && types.find(type.name) == &type) {
@@ -316,7 +349,7 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
             for (const auto& item : type.sub_items) {
                 if (item.bit_size == 0 || trim(item.type).empty()) continue;
                 const std::optional<std::uint64_t> bits = types.bit_size(item.type);
-                if (!bits || *bits == item.bit_size) continue;
+                if (!bits || *bits == item.bit_size || type_accounts_for_users(item.type)) continue;
                 context.report(item.pos, "SubItem '" + item.name + "' of DataType " + type.name + " has BitSize " + std::to_string(item.bit_size) +
                                              " but its type " + std::string(trim(item.type)) + " is " + bits_text(*bits));
             }
@@ -324,7 +357,7 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
         for (const auto& object : scope.dictionary->objects) {
             if (object.bit_size == 0 || object.bit_size_pos.line == 0 || trim(object.type).empty()) continue;
             const std::optional<std::uint64_t> bits = types.bit_size(object.type);
-            if (!bits || *bits == object.bit_size) continue;
+            if (!bits || *bits == object.bit_size || type_accounts_for_users(object.type)) continue;
             context.report(object.bit_size_pos, "Object " + object_address(object.index) + " has BitSize " + std::to_string(object.bit_size) +
                                                     " but its type " + std::string(trim(object.type)) + " is " + bits_text(*bits));
         }
@@ -339,7 +372,10 @@ constexpr Rule od_bitsize{
         "BitSize states the size of the object or sub-item; the type states it too (UINT is 16 bits, STRING(10) 80, a "
         "DataType its own BitSize; ET9300 Table 22, ETG.2000 ObjectType/BitSize). When they differ, SDO uploads, "
         "complete access and generated object tables disagree about the object's length. A DataType named like a "
-        "basic type (Beckhoff lists <DataType><Name>UINT</Name><BitSize>16</BitSize>) must have that size.",
+        "basic type (Beckhoff lists <DataType><Name>UINT</Name><BitSize>16</BitSize>) must have that size. Where the "
+        "DataType's own BitSize is the cause (an array od-array-size reports, a structure whose SubItems run past its "
+        "BitSize, which od-subitem-layout reports) or a convention explains it (an SoE list's element array, BOOL "
+        "arrays in whole bytes), its users are not reported again.",
     .bad_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>32</BitSize></Object>",
     .good_example = "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize></Object>",
     .check = check_bitsize,
@@ -383,6 +419,7 @@ void add_od_type(std::vector<Rule>& out) {
         od_nonstandard_type_name,
         od_type_cycle,
         od_subitem_layout,
+        od_layout_complete_access,
         od_array_size,
         od_bitsize,
         od_duplicate_datatype,

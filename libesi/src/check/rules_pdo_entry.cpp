@@ -40,7 +40,7 @@ std::vector<std::string_view> basic_type_names() {
     return names;
 }
 
-// ---- pdo-entry-type-unknown -----------------------------------------------------------------
+// ---- pdo-entry-type-unknown, pdo-entry-type-spelling ----------------------------------------
 
 void check_entry_type_unknown(const EsiDocument& document, RuleContext& context) {
     static const std::vector<std::string_view> names = basic_type_names();
@@ -52,16 +52,9 @@ void check_entry_type_unknown(const EsiDocument& document, RuleContext& context)
                 context.report(data_type_or_entry(entry), entry_label(entry) + " has an empty DataType");
             return;
         }
+        // A known non-standard spelling is pdo-entry-type-spelling's.
+        if (type.known || !type.standard_name.empty()) return;
         const std::string& text = *entry.data_type;
-        if (!type.standard_name.empty()) {
-            const bool whole = type.nonstandard_name == trim(text);
-            context.report(data_type_or_entry(entry), entry_label(entry) + " has DataType '" + text + "'" +
-                                                          (whole ? ", which" : ": '" + std::string(type.nonstandard_name) + "'") +
-                                                          " is not an ESI type name; the standard name is '" +
-                                                          std::string(type.standard_name) + "'");
-            return;
-        }
-        if (type.known) return;
         std::string message = entry_label(entry) + " has DataType '" + text + "', which is neither a basic ESI type nor " +
                               (scope.dictionary ? "defined in the Dictionary" : "defined anywhere (there is no Dictionary)");
         if (const std::string suggestion = closest_match(text, names); !suggestion.empty())
@@ -73,15 +66,45 @@ void check_entry_type_unknown(const EsiDocument& document, RuleContext& context)
 constexpr Rule pdo_entry_type_unknown{
     .id = "pdo-entry-type-unknown",
     .default_severity = Severity::error,
-    .summary = "A PDO entry's DataType is not an ESI type name",
+    .summary = "A PDO entry's DataType is not a type any tool knows",
     .rationale =
         "Masters type process variables from the entry's DataType. A name that is neither a basic ESI type (ETG.2000, "
-        "ET9300 Table 22: BOOL, USINT, UINT, UDINT, …) nor defined in the Dictionary cannot be typed; generators such "
-        "as pollen-robotics/pyesi write C-style names (UINT8, UINT16) that TwinCAT does not know. The message names "
-        "the standard spelling when there is one.",
-    .bad_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT16</DataType></Entry>",
+        "ET9300 Table 22: BOOL, USINT, UINT, UDINT, …), nor defined in the Dictionary, nor a known spelling of a "
+        "basic type (pdo-entry-type-spelling) cannot be typed: the configuration tool rejects the variable or makes "
+        "it an untyped byte field. An empty DataType on a mapped entry is reported too (padding needs none).",
+    .bad_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UNIT</DataType></Entry>",
     .good_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT</DataType></Entry>",
     .check = check_entry_type_unknown,
+};
+
+void check_entry_type_spelling(const EsiDocument& document, RuleContext& context) {
+    for_each_typed_entry(document, context, [&](const PdoScope&, EntryTypes& types, const PdoEntry& entry) {
+        const EntryType& type = types.of(entry);
+        if (!type.present || type.standard_name.empty()) return;
+        const std::string& text = *entry.data_type;
+        const bool whole = type.nonstandard_name == trim(text);
+        context.report(data_type_or_entry(entry), entry_label(entry) + " has DataType '" + text + "'" +
+                                                      (whole ? ", which" : ": '" + std::string(type.nonstandard_name) + "'") +
+                                                      " is not an ESI type name; the standard name is '" +
+                                                      std::string(type.standard_name) + "'");
+    });
+}
+
+constexpr Rule pdo_entry_type_spelling{
+    .id = "pdo-entry-type-spelling",
+    .default_severity = Severity::warning,
+    .summary = "A PDO entry's DataType is a non-standard spelling of a basic type (UINT16 for UINT)",
+    .rationale =
+        "ESI type names are the IEC 61131-3 style names of ETG.2000 and ET9300 Table 22 (USINT, UINT, UDINT, SINT, "
+        "INT, DINT, REAL, LREAL, …). C-style and TwinCAT spellings (UINT8/UINT16/UINT32/UINT64, INT8…INT64, FLOAT, "
+        "DOUBLE) and CoE names (UNSIGNED16) name the same types: the IgH EtherCAT master's `ethercat xml` command "
+        "writes UINT<bits> itself (tool/CommandXml.cpp; the bus-config.xml dumps in DiamondLightSource/ethercat), "
+        "pollen-robotics/pyesi writes UINT8/UINT16, and BitLen "
+        "carries the layout either way. Tools that only know the standard names lose the variable's type, so the "
+        "message names the standard spelling; the other pdo rules judge the entry as that type.",
+    .bad_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT16</DataType></Entry>",
+    .good_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT</DataType></Entry>",
+    .check = check_entry_type_spelling,
 };
 
 // ---- pdo-entry-bitlen-type ------------------------------------------------------------------
@@ -135,6 +158,35 @@ constexpr Rule pdo_padding_subindex{
     .check = check_padding_subindex,
 };
 
+// ---- pdo-padding-bitlen-zero ----------------------------------------------------------------
+
+void check_padding_bitlen_zero(const EsiDocument& document, RuleContext& context) {
+    for_each_entry(document, [&](const PdoScope&, const Pdo& pdo, const PdoEntry& entry) {
+        // BitLen 0 without a BitLen element is a missing BitLen, which the reader reports.
+        if (!entry.is_padding() || entry.bit_len != 0 || entry.bit_len_pos.line == 0) return;
+        context.report(entry.bit_len_pos, "Padding entry (Index 0) of " + std::string(pdo.element_name()) + " " + object_address(pdo.index) +
+                                              " has BitLen 0; it fills no gap, and a master that writes the mapping "
+                                              "downloads an entry of length 0");
+    });
+}
+
+constexpr Rule pdo_padding_bitlen_zero{
+    .id = "pdo-padding-bitlen-zero",
+    .default_severity = Severity::warning,
+    .summary = "A padding entry (Index 0) with BitLen 0",
+    .rationale =
+        "A padding entry reserves BitLen bits of a PDO to align what follows (mapped as 0x0000:00 with the gap's "
+        "length; OpenEtherCATsociety/SOEM #297). With BitLen 0 it reserves nothing, yet it is still a mapping entry: "
+        "it counts in the mapping object's sub-index 0 and in the SII PDO category, and a master that configures the "
+        "mapping (CoE PdoConfig) downloads an entry of length 0, which a slave stack may refuse like any mapping "
+        "entry it does not expect (ETG.1000.6 PDO mapping). The process image is the same with or without it: a "
+        "warning; remove the entry. Generators leave such entries when the data already ends on a byte boundary "
+        "(Beckhoff BKxxxxModules.xml, module KL9191, in DiamondLightSource/ethercat etc/xml/).",
+    .bad_example = "<Entry><Index>#x0</Index><BitLen>0</BitLen></Entry>",
+    .good_example = "<Entry><Index>#x0</Index><BitLen>2</BitLen></Entry> (or no entry)",
+    .check = check_padding_bitlen_zero,
+};
+
 // ---- pdo-entry-alignment --------------------------------------------------------------------
 
 void check_entry_alignment(const EsiDocument& document, RuleContext& context) {
@@ -179,8 +231,10 @@ constexpr Rule pdo_entry_alignment{
 void add_pdo_entry(std::vector<Rule>& out) {
     out.insert(out.end(), {
         pdo_entry_type_unknown,
+        pdo_entry_type_spelling,
         pdo_entry_bitlen_type,
         pdo_padding_subindex,
+        pdo_padding_bitlen_zero,
         pdo_entry_alignment,
     });
 }

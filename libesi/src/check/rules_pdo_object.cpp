@@ -150,22 +150,25 @@ void check_entry_object_type(const EsiDocument& document, RuleContext& context) 
         context.report(entry.data_type_pos.line ? entry.data_type_pos : entry.pos,
                        entry_label(entry) + " has DataType " + *entry.data_type + " (" + std::string(to_string(written)) + ") but " +
                            target_label(*object, *target) + " is " + target->type + " (" + std::string(to_string(actual)) +
-                           "); a master would misread its value",
+                           "); one of the two is stale, and masters type the process variable by the entry",
                        {context.note(object->pos, "the object is declared here")});
     });
 }
 
 constexpr Rule pdo_entry_object_type{
     .id = "pdo-entry-object-type",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "A PDO entry's DataType differs in kind (signedness) from the object it maps",
     .rationale =
-        "The entry's DataType is what the master uses to interpret the bits; the object's type is what the firmware "
-        "puts there. A signed object described as UDINT reads -1 as 4294967295, and a REAL described as DINT is "
-        "garbage. Generators that choose the DataType by bit width alone produce exactly this, and the device still "
-        "reaches OP, since no state transition checks the DataType (leducp/KickCAT test "
-        "mapping_target_subindex_reconciled_against_object reconciles an entry with its object). Types of the same "
-        "kind and width (UINT/WORD, BOOL/BIT1) are accepted.",
+        "The entry's DataType is what masters use to type the process variable; the object's type is what the "
+        "offline Dictionary says the firmware puts there. Where they differ in kind, one of them is stale: a signed "
+        "value typed UDINT reads -1 as 4294967295, a REAL typed DINT is garbage. Generators that choose the "
+        "DataType by bit width alone produce this (leducp/KickCAT test mapping_target_subindex_reconciled_against_object "
+        "reconciles an entry with its object), but so does a Dictionary left behind when the firmware changed the "
+        "value (Beckhoff EL3692 maps 0x6002:01 as REAL while its Dictionary still says DINT). The sizes agree (a size "
+        "difference is pdo-entry-object-bitlen's finding), so the process-image layout is right and the device "
+        "reaches OP; only the type of one variable is in doubt, and the rule cannot tell which side is wrong: a "
+        "warning that names both. Types of the same kind and width (UINT/WORD, BOOL/BIT1) are accepted.",
     .bad_example =
         "<Object><Index>#x6064</Index><Type>DINT</Type>… <Entry><Index>#x6064</Index><BitLen>32</BitLen><DataType>UDINT</DataType>",
     .good_example =
@@ -173,40 +176,113 @@ constexpr Rule pdo_entry_object_type{
     .check = check_entry_object_type,
 };
 
-// ---- pdo-entry-object-bitlen ----------------------------------------------------------------
+// ---- pdo-entry-object-bitlen, pdo-entry-narrower-than-object ------------------------------
+
+// How an entry's BitLen relates to the size of the object it maps.
+enum class BitLenFit {
+    agrees,                 // equal, or nothing to compare
+    bool_as_bit,            // a BOOL object stored in a byte, mapped as the one bit it means
+    narrower_alternative,   // a compact variant: an excluded PDO maps the object at full width
+    narrower_fixed,         // narrower in a fixed PDO: the device's own mapping, the Dictionary disagrees
+    narrower,               // narrower in a PDO the master may configure
+    wider,                  // wider than the object
+};
+
+// Whether `pdo` excludes a PDO of the same owner and direction that maps the same object entry
+// with `bits`. Beckhoff offers process data as a full-width PDO and a "compact" one that maps
+// the same objects narrower, each excluding the other (ETG.2000 PdoType/Exclude): only one of
+// them is ever assigned.
+bool has_full_width_alternative(const PdoScope& scope, const Pdo& pdo, const PdoEntry& entry, std::uint64_t bits) {
+    const std::vector<Pdo>& same_direction = pdo.direction == PdoDirection::rx ? *scope.rx_pdos : *scope.tx_pdos;
+    for (const auto& exclude : pdo.excludes)
+        for (const auto& other : same_direction) {
+            if (&other == &pdo || other.index != exclude.index) continue;
+            for (const auto& e : other.entries)
+                if (e.index == entry.index && e.effective_subindex() == entry.effective_subindex() && e.bit_len == bits) return true;
+        }
+    return false;
+}
+
+BitLenFit bitlen_fit(const MappedEntry& m, const ObjectEntry*& target) {
+    const PdoEntry& entry = m.entry;
+    target = nullptr;
+    if (entry.bit_len == 0 || entry.bit_len_pos.line == 0) return BitLenFit::agrees;
+    target = m.dictionary.entry(entry.index, entry.effective_subindex());
+    if (!target || target->bit_size == 0 || target->bit_size == entry.bit_len) return BitLenFit::agrees;
+    // When BitLen already disagrees with the entry's own DataType, pdo-entry-bitlen-type reports it.
+    const EntryType& type = m.entry_types.of(entry);
+    if (type.known && type.bit_size != 0 && type.bit_size != entry.bit_len) return BitLenFit::agrees;
+    if (entry.bit_len > target->bit_size) return BitLenFit::wider;
+    if (entry.bit_len == 1 && target->bit_size == 8 && target->basic && target->basic->esi_name == "BOOL") return BitLenFit::bool_as_bit;
+    if (has_full_width_alternative(m.scope, m.pdo, entry, target->bit_size)) return BitLenFit::narrower_alternative;
+    return m.pdo.fixed.value_or(false) ? BitLenFit::narrower_fixed : BitLenFit::narrower;
+}
+
+void report_bitlen(RuleContext& context, const MappedEntry& m, const ObjectEntry& target, std::string_view consequence) {
+    const PdoEntry& entry = m.entry;
+    const Object* object = m.dictionary.object(entry.index);
+    std::string written = entry.data_type && !entry.data_type->empty() ? " (" + *entry.data_type + ")" : "";
+    context.report(entry.bit_len_pos, entry_label(entry) + " has BitLen " + std::to_string(entry.bit_len) + written + " but " +
+                                          target_label(*object, target) + " is " + target.type + ", " + bits_text(target.bit_size) +
+                                          std::string(consequence),
+                   {context.note(object->pos, "the object is declared here")});
+}
 
 void check_entry_object_bitlen(const EsiDocument& document, RuleContext& context) {
     for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
-        const DictionaryIndex& dictionary = m.dictionary;
-        const PdoEntry& entry = m.entry;
-        if (entry.bit_len == 0 || entry.bit_len_pos.line == 0) return;
-        const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
-        if (!target || target->bit_size == 0 || target->bit_size == entry.bit_len) return;
-        // When BitLen already disagrees with the entry's own DataType, pdo-entry-bitlen-type reports it.
-        const EntryType& type = m.entry_types.of(entry);
-        if (type.known && type.bit_size != 0 && type.bit_size != entry.bit_len) return;
-        const Object* object = dictionary.object(entry.index);
-        std::string written = entry.data_type && !entry.data_type->empty() ? " (" + *entry.data_type + ")" : "";
-        context.report(entry.bit_len_pos, entry_label(entry) + " has BitLen " + std::to_string(entry.bit_len) + written + " but " +
-                                              target_label(*object, *target) + " is " + target->type + ", " + bits_text(target->bit_size),
-                       {context.note(object->pos, "the object is declared here")});
+        const ObjectEntry* target = nullptr;
+        const BitLenFit fit = bitlen_fit(m, target);
+        if (fit == BitLenFit::wider || fit == BitLenFit::narrower) report_bitlen(context, m, *target, "");
     });
 }
 
 constexpr Rule pdo_entry_object_bitlen{
     .id = "pdo-entry-object-bitlen",
     .default_severity = Severity::error,
-    .summary = "A PDO entry's BitLen differs from the size of the object it maps",
+    .summary = "A PDO entry's BitLen is larger than the object it maps, or smaller in a PDO the master configures",
     .rationale =
         "The device fills the process image with the object's own size; an ESI entry with another BitLen makes the "
         "master read a different layout than the slave writes (STÖBER ECS 5000 EtherCAT manual §7.1.1: the device "
-        "reports the mapped length; SDO abort 0x06040042 'length exceeds PDO'). Reported only when BitLen agrees with "
-        "the entry's own DataType (otherwise pdo-entry-bitlen-type reports it).",
+        "reports the mapped length; SDO abort 0x06040042 'length exceeds PDO'). A BitLen larger than the object is "
+        "always reported. A smaller one is reported where the PDO is not Fixed, so the master downloads this mapping "
+        "and the device may refuse a length below its object's (ETG.1000.6 PDO mapping); not reported are compact "
+        "variants (the PDO excludes another that maps the same object at full width, ETG.2000 PdoType/Exclude), BOOL "
+        "objects stored in a byte and mapped as one bit, and narrower entries of Fixed PDOs "
+        "(pdo-entry-narrower-than-object). Reported only when BitLen agrees with the entry's own DataType (otherwise "
+        "pdo-entry-bitlen-type reports it).",
     .bad_example =
-        "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize>… <Entry><Index>#x6041</Index><BitLen>8</BitLen>",
+        "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize>… <RxPdo><Entry><Index>#x6041</Index><BitLen>32</BitLen>",
     .good_example =
-        "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize>… <Entry><Index>#x6041</Index><BitLen>16</BitLen>",
+        "<Object><Index>#x6041</Index><Type>UINT</Type><BitSize>16</BitSize>… <RxPdo><Entry><Index>#x6041</Index><BitLen>16</BitLen>",
     .check = check_entry_object_bitlen,
+};
+
+void check_entry_narrower_than_object(const EsiDocument& document, RuleContext& context) {
+    for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
+        const ObjectEntry* target = nullptr;
+        if (bitlen_fit(m, target) == BitLenFit::narrower_fixed)
+            report_bitlen(context, m, *target, "; the PDO is Fixed, so the process image has the entry's BitLen and the "
+                                               "offline Dictionary disagrees with it");
+    });
+}
+
+constexpr Rule pdo_entry_narrower_than_object{
+    .id = "pdo-entry-narrower-than-object",
+    .default_severity = Severity::warning,
+    .summary = "A Fixed PDO maps an object with a BitLen smaller than the object's size",
+    .rationale =
+        "A Fixed PDO's mapping is the device's own and is never downloaded (ETG.2000 PdoType/Fixed), so masters lay "
+        "out the process image from the entries' BitLen, which is what the device sends; only the offline Dictionary "
+        "(ETG.2000 ObjectType/BitSize) disagrees, and a tool that sizes the variable from the object, or reads it by "
+        "SDO, sees more bits than the process image holds (Beckhoff EL6690: 0xF100:01 UDINT mapped as 24 bits). "
+        "Inconsistent but tolerated by masters: a warning. Where the master configures the mapping, "
+        "pdo-entry-object-bitlen reports it as an error.",
+    .bad_example =
+        "<Object><Index>#xF100</Index>…<SubItem><Name>CycleTimer</Name><Type>UDINT</Type><BitSize>32</BitSize>… "
+        "<TxPdo Fixed=\"1\"><Entry><Index>#xF100</Index><SubIndex>1</SubIndex><BitLen>24</BitLen>",
+    .good_example =
+        "<TxPdo Fixed=\"1\"><Entry><Index>#xF100</Index><SubIndex>1</SubIndex><BitLen>32</BitLen>",
+    .check = check_entry_narrower_than_object,
 };
 
 // ---- pdo-entry-not-mappable -----------------------------------------------------------------
@@ -263,6 +339,7 @@ void add_pdo_object(std::vector<Rule>& out) {
         pdo_entry_object_missing,
         pdo_entry_object_type,
         pdo_entry_object_bitlen,
+        pdo_entry_narrower_than_object,
         pdo_entry_not_mappable,
     });
 }

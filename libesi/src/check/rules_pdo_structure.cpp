@@ -1,6 +1,7 @@
 // Rules of the pdo area on the PDO list of a device or module: index ranges, SyncManager
 // references, duplicates, Exclude references and the 8-bit limits of the CoE mapping and assignment
 // objects.
+#include <algorithm>
 #include <map>
 #include <unordered_set>
 
@@ -8,6 +9,7 @@
 #include "check/od_text.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
+#include "check/slot_places.hpp"
 #include "esi/model/limits.hpp"
 
 namespace esi::rules {
@@ -33,43 +35,119 @@ std::string sm_list(const Device& device) {
     return "declares SM0-SM" + std::to_string(device.sms.size() - 1);
 }
 
-// ---- pdo-index-range ------------------------------------------------------------------------
+// ---- pdo-index-range, pdo-index-area -------------------------------------------------------
 
-void check_index_range(const EsiDocument& document, RuleContext& context) {
+// Whether the master writes a device's PDO indices: into the assignment objects 0x1C12/0x1C13
+// (CoE PdoAssign) or as the mapping object it downloads (CoE PdoConfig).
+bool master_writes_pdo_indices(const Device& device) {
+    if (!device.mailbox || !device.mailbox->coe) return false;
+    const CoeProtocol& coe = *device.mailbox->coe;
+    return coe.pdo_assign.value_or(false) || coe.pdo_config.value_or(false);
+}
+
+// A PDO whose index, in some slot, lies outside its direction's mapping area.
+struct OutOfArea {
+    const Pdo& pdo;
+    std::uint32_t index;          // the index there (the base index outside a slot)
+    std::optional<std::uint32_t> slot;  // the slot number, for slot-dependent indices
+    bool written;                 // the master writes this index (PdoAssign/PdoConfig)
+};
+
+// Calls f(OutOfArea) once per PDO whose index is outside its mapping area in any slot it can
+// take, for devices with CoE and for modules. A slot-dependent index is judged where the module
+// sits (ETG.2000 DependOnSlot), not by its base; a module the document plugs into no device is
+// judged by its base index, and then nothing says whether a master writes it.
+template <class F>
+void for_each_out_of_area(const EsiDocument& document, F&& f) {
     for (const auto& scope : pdo_scopes(document)) {
         // The ranges are those of CoE mapping objects. Devices without CoE (simple terminals,
         // SoE drives whose MDT/AT carry IDNs) number their PDOs freely in the SII.
         if (scope.device && !(scope.device->mailbox && scope.device->mailbox->coe)) continue;
+        const std::vector<SlotPlace> places = scope.module ? slot_places(document, *scope.module) : std::vector<SlotPlace>{};
+        const bool written = scope.device ? master_writes_pdo_indices(*scope.device)
+                                          : std::any_of(places.begin(), places.end(),
+                                                        [](const SlotPlace& p) { return master_writes_pdo_indices(*p.device); });
         scope.for_each_pdo([&](const Pdo& pdo) {
             if (!has_index(pdo)) return;
-            const bool rx = pdo.direction == PdoDirection::rx;
-            const IndexRange& area = rx ? rx_mapping_area : tx_mapping_area;
-            if (area.contains(pdo.index)) return;
-            std::string message = std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is outside the " +
-                                  std::string(pdo.element_name()) + " mapping area " + range_text(area);
-            const IndexRange& other = rx ? tx_mapping_area : rx_mapping_area;
-            if (other.contains(pdo.index))
-                message += "; " + object_address(pdo.index) + (rx ? " is a TxPdo" : " is an RxPdo") + " index, so the PDO is probably declared with the wrong element";
-            context.report(pdo.index_pos, std::move(message));
+            const IndexRange& area = pdo.direction == PdoDirection::rx ? rx_mapping_area : tx_mapping_area;
+            if (places.empty() || !depends_on_slot(pdo)) {
+                if (!area.contains(pdo.index)) f(OutOfArea{pdo, pdo.index, std::nullopt, written});
+                return;
+            }
+            for (const auto& place : places) {
+                const std::uint32_t index = pdo_index_in(pdo, place);
+                if (area.contains(index)) continue;
+                f(OutOfArea{pdo, index, place.slot_number, master_writes_pdo_indices(*place.device)});
+                return;  // one finding per PDO
+            }
         });
     }
+}
+
+std::string out_of_area_message(const OutOfArea& o) {
+    const Pdo& pdo = o.pdo;
+    const bool rx = pdo.direction == PdoDirection::rx;
+    const IndexRange& area = rx ? rx_mapping_area : tx_mapping_area;
+    std::string message = std::string(pdo.element_name()) + " index " + object_address(o.index);
+    if (o.slot) message += " (" + object_address(pdo.index) + " in slot " + std::to_string(*o.slot) + ")";
+    message += " is outside the " + std::string(pdo.element_name()) + " mapping area " + range_text(area);
+    const IndexRange& other = rx ? tx_mapping_area : rx_mapping_area;
+    if (other.contains(o.index))
+        message += "; " + object_address(o.index) + (rx ? " is a TxPdo" : " is an RxPdo") + " index, so the PDO is probably declared with the wrong element";
+    return message;
+}
+
+void check_index_range(const EsiDocument& document, RuleContext& context) {
+    for_each_out_of_area(document, [&](const OutOfArea& o) {
+        if (o.written) context.report(o.pdo.index_pos, out_of_area_message(o));
+    });
 }
 
 constexpr Rule pdo_index_range{
     .id = "pdo-index-range",
     .default_severity = Severity::error,
-    .summary = "RxPdo index outside 0x1600-0x17FF or TxPdo index outside 0x1A00-0x1BFF",
+    .summary = "RxPdo index outside 0x1600-0x17FF or TxPdo index outside 0x1A00-0x1BFF, where the master writes it",
     .rationale =
         "The PDO index is the index of its mapping object, and ETG.1000.6 reserves 0x1600-0x17FF for RxPDO mapping "
-        "and 0x1A00-0x1BFF for TxPDO mapping. A master that uploads or downloads the mapping (PdoAssign/PdoConfig) "
-        "addresses exactly that object, and the SOES tutorial and the item C series and Afag SE-Power EtherCAT "
-        "manuals (§6.1.1, Tabelle 5: RxPDOs 0x1600-0x1603, TxPDOs 0x1A00-0x1A03) rely on the split. An index in the "
-        "other range usually means the PDO was declared with the wrong element. Only devices with CoE are checked: "
-        "without CoE there are no mapping objects and the index only names the PDO in the SII (SoE drives number "
-        "their MDT/AT by IDN).",
-    .bad_example = "<TxPdo Sm=\"3\"><Index>#x1600</Index><Name>Inputs</Name>…</TxPdo>",
-    .good_example = "<TxPdo Sm=\"3\"><Index>#x1A00</Index><Name>Inputs</Name>…</TxPdo>",
+        "and 0x1A00-0x1BFF for TxPDO mapping. A master that assigns or configures PDOs (CoE PdoAssign or PdoConfig) "
+        "writes exactly that index into 0x1C12/0x1C13 and downloads the mapping into that object; a slave stack that "
+        "checks the range aborts the SDO and the transition to SafeOp fails, one that does not takes a TxPDO mapping "
+        "object for outputs. The SOES tutorial and the item C series and Afag SE-Power EtherCAT manuals (§6.1.1, "
+        "Tabelle 5: RxPDOs 0x1600-0x1603, TxPDOs 0x1A00-0x1A03) rely on the split. An index in the other range "
+        "usually means the PDO was declared with the wrong element. A slot-dependent index (DependOnSlot, "
+        "DependOnSlotGroup) is judged in every slot the module can take (ETG.2000 Slots: SlotPdoIncrement). Where "
+        "CoE declares neither PdoAssign nor PdoConfig the index is only a label (pdo-index-area); devices without CoE "
+        "have no mapping objects at all and are not checked.",
+    .bad_example =
+        "<TxPdo Sm=\"3\"><Index>#x1600</Index><Name>Inputs</Name>…</TxPdo> … <CoE PdoAssign=\"true\" PdoConfig=\"true\"/>",
+    .good_example =
+        "<TxPdo Sm=\"3\"><Index>#x1A00</Index><Name>Inputs</Name>…</TxPdo> … <CoE PdoAssign=\"true\" PdoConfig=\"true\"/>",
     .check = check_index_range,
+};
+
+void check_index_area(const EsiDocument& document, RuleContext& context) {
+    for_each_out_of_area(document, [&](const OutOfArea& o) {
+        if (!o.written)
+            context.report(o.pdo.index_pos, out_of_area_message(o) + "; the index is a label only, as CoE declares neither "
+                                                                     "PdoAssign nor PdoConfig");
+    });
+}
+
+constexpr Rule pdo_index_area{
+    .id = "pdo-index-area",
+    .default_severity = Severity::warning,
+    .summary = "A PDO index outside its mapping area on a device whose CoE neither assigns nor configures PDOs",
+    .rationale =
+        "ETG.1000.6 reserves 0x1600-0x17FF for RxPDO and 0x1A00-0x1BFF for TxPDO mapping objects. When the device's "
+        "CoE element declares neither PdoAssign nor PdoConfig (ETG.2000 CoE attributes), a master never writes the "
+        "index into 0x1C12/0x1C13 nor downloads a mapping into it: the index only names the PDO in the SII PDO "
+        "category and in configuration tools, and the process image does not depend on it. Still, the index "
+        "contradicts the device's mapping objects, which CoE masters may read, and usually means the PDO was "
+        "declared with the wrong element (Beckhoff EL9800 evaluation board: RxPdo 0x1A00, TxPdo 0x1600). A module "
+        "that no device of the file takes is judged here too, since nothing says whether its PDOs are written.",
+    .bad_example = "<RxPdo Sm=\"2\"><Index>#x1A00</Index>…</RxPdo> … <CoE/>",
+    .good_example = "<RxPdo Sm=\"2\"><Index>#x1600</Index>…</RxPdo> … <CoE/>",
+    .check = check_index_area,
 };
 
 // ---- pdo-sm-unknown -------------------------------------------------------------------------
@@ -146,36 +224,79 @@ constexpr Rule pdo_sm_direction{
     .check = check_sm_direction,
 };
 
-// ---- pdo-duplicate-index --------------------------------------------------------------------
+// ---- pdo-duplicate-index, pdo-duplicate-label ----------------------------------------------
 
-void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
+// Whether two PDOs of one index name one CoE mapping object: both exist in the device (not
+// Virtual, which TwinCAT maps from ESC registers) and the owner has CoE, where the index is the
+// mapping object's and 0x1C12/0x1C13 assign PDOs by it. A module's PDOs are CoE mapping objects.
+bool index_names_one_mapping_object(const PdoScope& scope, const Pdo& a, const Pdo& b) {
+    if (a.is_virtual.value_or(false) || b.is_virtual.value_or(false)) return false;
+    return !scope.device || (scope.device->mailbox && scope.device->mailbox->coe);
+}
+
+// Calls f(scope, pdo, first) for every PDO whose index an earlier PDO of its owner already uses.
+template <class F>
+void for_each_repeated_index(const EsiDocument& document, F&& f) {
     for (const auto& scope : pdo_scopes(document)) {
         std::map<std::uint32_t, const Pdo*> seen;
         scope.for_each_pdo([&](const Pdo& pdo) {
             if (!has_index(pdo)) return;
             const auto [it, inserted] = seen.emplace(pdo.index, &pdo);
-            if (inserted) return;
-            const Pdo& first = *it->second;
-            context.report(pdo.index_pos,
-                           std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is already used by " +
-                               (first.direction == pdo.direction ? "another " : "a ") + std::string(first.element_name()) +
-                               (scope.device ? " of this device" : " of this module"),
-                           {context.note(index_or_element(first), "first declared here")});
+            if (!inserted) f(scope, pdo, *it->second);
         });
     }
+}
+
+void report_repeated_index(RuleContext& context, const PdoScope& scope, const Pdo& pdo, const Pdo& first, std::string_view consequence) {
+    context.report(pdo.index_pos,
+                   std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is already used by " +
+                       (first.direction == pdo.direction ? "another " : "a ") + std::string(first.element_name()) +
+                       (scope.device ? " of this device" : " of this module") + std::string(consequence),
+                   {context.note(index_or_element(first), "first declared here")});
+}
+
+void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
+    for_each_repeated_index(document, [&](const PdoScope& scope, const Pdo& pdo, const Pdo& first) {
+        if (index_names_one_mapping_object(scope, pdo, first)) report_repeated_index(context, scope, pdo, first, "");
+    });
 }
 
 constexpr Rule pdo_duplicate_index{
     .id = "pdo-duplicate-index",
     .default_severity = Severity::error,
-    .summary = "Two PDOs of one device or module share an index",
+    .summary = "Two PDOs of one CoE device or module share an index",
     .rationale =
         "A PDO index names one mapping object; two PDOs with the same index cannot both be assigned, and a master keeps "
         "only one of them (KickCAT warns on duplicate PDO indices; ETG.1000.6 one object per index). RxPdo and TxPdo "
-        "share the index space.",
-    .bad_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1600</Index>…</RxPdo>",
-    .good_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1601</Index>…</RxPdo>",
+        "share the index space. Where no index is written to the device (no CoE, or a Virtual PDO that TwinCAT maps "
+        "from ESC registers), the repeat is pdo-duplicate-label's warning.",
+    .bad_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1600</Index>…</RxPdo> … <CoE/>",
+    .good_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1601</Index>…</RxPdo> … <CoE/>",
     .check = check_duplicate_index,
+};
+
+void check_duplicate_label(const EsiDocument& document, RuleContext& context) {
+    for_each_repeated_index(document, [&](const PdoScope& scope, const Pdo& pdo, const Pdo& first) {
+        if (!index_names_one_mapping_object(scope, pdo, first))
+            report_repeated_index(context, scope, pdo, first, "; no index is written to the device, but Exclude and OpMode "
+                                                              "references to it are ambiguous");
+    });
+}
+
+constexpr Rule pdo_duplicate_label{
+    .id = "pdo-duplicate-label",
+    .default_severity = Severity::warning,
+    .summary = "Two PDOs share an index where the index is only a label (no CoE, or a Virtual PDO)",
+    .rationale =
+        "A device without CoE has no mapping objects, and a Virtual PDO (ETG.2000 PdoType@Virtual) is mapped by TwinCAT "
+        "from ESC registers rather than assigned: no master writes these indices to the device, and the process "
+        "image follows the PDOs' SM assignment and entries (Beckhoff EL2252: a virtual RxPdo 0x1602 'DC Sync "
+        "Activate' beside an empty mandatory RxPdo 0x1602 'Reserved'). The index still names the PDO in the SII PDO "
+        "category, in Exclude lists and in Dc/OpMode Sm/Pdo references, which become ambiguous: a warning. Where CoE "
+        "assigns PDOs by index, it is pdo-duplicate-index's error.",
+    .bad_example = "<RxPdo Virtual=\"true\"><Index>#x1602</Index>…</RxPdo><RxPdo><Index>#x1602</Index>…</RxPdo>",
+    .good_example = "<RxPdo Virtual=\"true\"><Index>#x1602</Index>…</RxPdo><RxPdo><Index>#x1604</Index>…</RxPdo>",
+    .check = check_duplicate_label,
 };
 
 // ---- pdo-exclude-unknown --------------------------------------------------------------------
@@ -210,6 +331,49 @@ constexpr Rule pdo_exclude_unknown{
     .check = check_exclude_unknown,
 };
 
+// ---- pdo-legacy-ref -------------------------------------------------------------------------
+
+// A PDO of the form before ETG.2000: no Index and no entries, only Ref="name" of a description kept
+// elsewhere (<RxPdo Ref="AX2000Out" Fixed="1" Sm="0"/>).
+const XmlAttribute* legacy_ref(const Pdo& pdo) {
+    if (pdo.index_pos.line != 0 || !pdo.entries.empty()) return nullptr;
+    return pdo.extras.attribute("Ref");
+}
+
+void check_legacy_ref(const EsiDocument& document, RuleContext& context) {
+    const Pdo* first = nullptr;
+    std::size_t count = 0;
+    for (const auto& scope : pdo_scopes(document))
+        scope.for_each_pdo([&](const Pdo& pdo) {
+            if (!legacy_ref(pdo)) return;
+            if (!first) first = &pdo;
+            ++count;
+        });
+    if (!first) return;
+    // One finding per file: the form is the file's, not one PDO's fault.
+    std::string message = std::string(first->element_name()) + " Ref=\"" + legacy_ref(*first)->value +
+                          "\" describes its layout by a pre-ETG.2000 reference";
+    if (count > 1) message += ", and so do " + std::to_string(count - 1) + " more PDO" + (count > 2 ? "s" : "") + " of this file";
+    message += "; no tool has the referenced descriptions, so the process image cannot be taken from this file";
+    context.report(first->pos, std::move(message));
+}
+
+constexpr Rule pdo_legacy_ref{
+    .id = "pdo-legacy-ref",
+    .default_severity = Severity::error,
+    .summary = "PDOs given by a pre-ETG.2000 Ref= instead of Index and entries (once per file)",
+    .rationale =
+        "Since ETG.2000 a PDO carries its Index and its entries (ETG.2000 PdoType: Index is required). Files from "
+        "before it name a PDO description kept elsewhere instead (<RxPdo Ref=\"AX2000Out\" Fixed=\"1\" Sm=\"0\"/>, "
+        "Beckhoff's EtherCAT_Terminals catalogue); those descriptions are in no file a tool has, so neither a master "
+        "nor the SII builder can take the process image from the description, and the schema rejects the PDO. An "
+        "error, reported once per file with the number of such PDOs rather than once per PDO, since the form is the "
+        "file's.",
+    .bad_example = "<RxPdo Ref=\"AX2000Out\" Fixed=\"1\" Mandatory=\"1\" Sm=\"0\"/>",
+    .good_example = "<RxPdo Fixed=\"1\" Mandatory=\"1\" Sm=\"0\"><Index>#x1600</Index><Name>Outputs</Name><Entry>…</Entry></RxPdo>",
+    .check = check_legacy_ref,
+};
+
 // ---- pdo-mapping-limits ---------------------------------------------------------------------
 
 void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
@@ -230,8 +394,8 @@ void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
                     context.report(pdo.pos, pdo_name(pdo) + " has " + std::to_string(pdo.entries.size()) +
                                                 " entries; a PDO mapping object holds at most 255");
                 for (const auto& entry : pdo.entries) {
-                    // BitLen 0 maps nothing. Beckhoff ships it on padding entries (a zero-width
-                    // gap, harmless); on an object it is a corrupt mapping entry.
+                    // BitLen 0 maps nothing. On a padding entry it leaves the image as it is
+                    // (pdo-padding-bitlen-zero); on an object it is a corrupt mapping entry.
                     if (entry.bit_len == 0 && !entry.is_padding() && entry.bit_len_pos.line) {
                         context.report(entry.bit_len_pos, entry_label(entry) +
                                                               " has BitLen 0; a mapping entry maps 1 to 255 bits of its object, "
@@ -256,8 +420,8 @@ constexpr Rule pdo_mapping_limits{
         "The CoE mapping objects count their entries in the 8-bit sub-index 0 and store each entry's length in 8 "
         "bits; the assignment objects 0x1C1x likewise list at most 255 PDOs (ETG.1000.6 PDO mapping/assignment; the "
         "SII PDO category of ETG.2010 has one-byte counts too). leducp/KickCAT rejects such files ('>255 entries', "
-        "'BitLen > 255'). A BitLen of 0 on an object maps nothing; padding entries with BitLen 0 (a zero-width gap, "
-        "as in Beckhoff BKxxxxModules.xml in DiamondLightSource/ethercat etc/xml/) are harmless and not reported.",
+        "'BitLen > 255'). A BitLen of 0 on an object maps nothing; a padding entry with BitLen 0 leaves the process "
+        "image as it is and is pdo-padding-bitlen-zero's warning.",
     .bad_example = "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>512</BitLen>…</Entry>",
     .good_example = "<Entry><Index>#x7000</Index><SubIndex>1</SubIndex><BitLen>32</BitLen>…</Entry>",
     .check = check_mapping_limits,
@@ -268,9 +432,12 @@ constexpr Rule pdo_mapping_limits{
 void add_pdo_structure(std::vector<Rule>& out) {
     out.insert(out.end(), {
         pdo_index_range,
+        pdo_index_area,
         pdo_sm_unknown,
         pdo_sm_direction,
         pdo_duplicate_index,
+        pdo_duplicate_label,
+        pdo_legacy_ref,
         pdo_exclude_unknown,
         pdo_mapping_limits,
     });

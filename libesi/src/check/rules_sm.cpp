@@ -50,11 +50,22 @@ std::string_view typical_control_byte(SmRole role) {
 // bytes 0x0F00, 0x0F01 … next to each other (EL2xxx, EK18xx, EM2xxx): no buffers are laid out there.
 constexpr std::uint32_t process_memory_start = 0x1000;
 
+// Whether the ESC's PDI is digital I/O: SII word 0 (ConfigData byte 0, PDI control register
+// 0x0140) = 0x04 (ESC datasheet section II, PDI control). Such an ESC moves the I/O bytes itself;
+// the 1-byte SMs that Beckhoff's digital terminals put on them take one byte each, and they sit at
+// consecutive addresses.
+bool has_digital_io_pdi(const Device& device) {
+    if (!device.eeprom || !device.eeprom->config_data) return false;
+    const std::string_view text = device.eeprom->config_data->text;
+    return text.size() >= 2 && text[0] == '0' && text[1] == '4';
+}
+
 // A mailbox SM counts as one buffer even when its ControlByte says buffered: that fault is
 // sm-mailbox-mode's, and counting it again as an overlap would report one fault twice.
-bool occupies_three_buffers(const Device& device, const SyncManager& sm) {
+bool occupies_three_buffers(const Device& device, const SyncManager& sm, std::uint64_t size) {
     if (sm.start_address && *sm.start_address < process_memory_start) return false;
     if (role_is_mailbox(device_sm_role(device, sm))) return false;
+    if (size == 1 && has_digital_io_pdi(device)) return false;
     return sm.control_byte ? (*sm.control_byte & 0x03) == 0x00 : true;
 }
 
@@ -199,14 +210,15 @@ void check_mailbox_position(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule sm_mailbox_position{
     .id = "sm-mailbox-position",
-    .default_severity = Severity::warning,
+    .default_severity = Severity::error,
     .summary = "Mailbox SMs not at SM0 (out) and SM1 (in)",
     .rationale =
         "The standard mailbox uses SM0 for master -> slave (MBoxOut) and SM1 for slave -> master (MBoxIn): the SII "
-        "standard mailbox words 0x18-0x1B and 0x1C00:01/02 describe exactly these two, and masters such as SOEM "
-        "program SM0/SM1 as the mailbox from those words (SOES tutorial; the item C series and Afag SE-Power EtherCAT "
-        "manuals §6.1.1: SM0 is the mailbox for incoming SDOs, SM1 the one for outgoing SDOs). The n-th Sm element is "
-        "SMn.",
+        "standard mailbox words 0x18-0x1B and 0x1C00:01/02 describe exactly these two, and masters program SM0 and SM1 "
+        "as the mailbox from those words whatever the description's order (SOEM ecx_config_init sets SM[0]/SM[1] from "
+        "the SII mailbox offsets; SOES tutorial; the item C series and Afag SE-Power EtherCAT manuals §6.1.1: SM0 is "
+        "the mailbox for incoming SDOs, SM1 the one for outgoing SDOs). A device describing its mailbox on other SMs "
+        "is configured differently from what it declares: an error. The n-th Sm element is SMn.",
     .bad_example =
         "<Sm ...>Outputs</Sm><Sm ...>Inputs</Sm><Sm ... ControlByte=\"#x26\">MBoxOut</Sm><Sm ... "
         "ControlByte=\"#x22\">MBoxIn</Sm>",
@@ -241,7 +253,7 @@ void check_overlap(const EsiDocument& document, RuleContext& context) {
             if (!sm.start_address || (sm.is_virtual && *sm.is_virtual)) continue;
             const std::uint64_t size = effective_size(*device, n);
             if (size == 0) continue;
-            ranges.push_back({n, *sm.start_address, size, *sm.start_address + size * (occupies_three_buffers(*device, sm) ? 3 : 1)});
+            ranges.push_back({n, *sm.start_address, size, *sm.start_address + size * (occupies_three_buffers(*device, sm, size) ? 3 : 1)});
         }
         std::sort(ranges.begin(), ranges.end(), [](const SmRange& a, const SmRange& b) {
             return a.start != b.start ? a.start < b.start : a.number < b.number;
@@ -271,7 +283,8 @@ constexpr Rule sm_overlap{
         "SM's size is that of the PDOs assigned to it by default, since the master computes it from them, else "
         "DefaultSize; a mailbox SM counts once (a buffered mailbox is sm-mailbox-mode's finding). SMs below 0x1000, "
         "in the register area (Beckhoff terminals put 1-byte buffered SMs on the digital I/O bytes 0x0F00, 0x0F01), "
-        "count once as well.",
+        "count once as well, and so do 1-byte SMs of a device whose PDI is digital I/O (ConfigData byte 0 = 0x04, PDI "
+        "control register 0x0140): the ESC moves those I/O bytes itself, one byte each.",
     .bad_example =
         "<Sm StartAddress=\"#x1100\" ControlByte=\"#x64\" DefaultSize=\"64\" Enable=\"1\">Outputs</Sm> "
         "<Sm StartAddress=\"#x1140\" ControlByte=\"#x20\" DefaultSize=\"64\" Enable=\"1\">Inputs</Sm>",
@@ -314,6 +327,49 @@ constexpr Rule sm_size_zero{
     .check = check_size_zero,
 };
 
+// ---- sm-default-size-pdo --------------------------------------------------------------------
+
+void check_default_size_pdo(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        // Slot devices get their PDOs (and so their SM sizes) from the plugged modules.
+        if (device->slots) continue;
+        for (std::size_t n = 0; n < device->sms.size(); ++n) {
+            const SyncManager& sm = device->sms[n];
+            if (!sm.default_size || *sm.default_size == 0 || sm.is_virtual.value_or(false)) continue;
+            const SmRole role = device_sm_role(*device, sm);
+            if (role != SmRole::outputs && role != SmRole::inputs) continue;
+            // A lower bound: an oversampling PDO (OSFac) is counted once.
+            const std::uint64_t pdo_bytes = default_pdo_bytes(*device, n);
+            if (pdo_bytes <= *sm.default_size) continue;
+            context.report(sm.pos, sm_label(sm, n) + " has DefaultSize " + std::to_string(*sm.default_size) +
+                                       " but the PDOs assigned to it by default (Sm=\"" + std::to_string(n) + "\") carry at least " +
+                                       std::to_string(pdo_bytes) + " bytes; a tool that starts the SM with DefaultSize cuts "
+                                       "the process data short");
+        }
+    }
+}
+
+constexpr Rule sm_default_size_pdo{
+    .id = "sm-default-size-pdo",
+    .default_severity = Severity::warning,
+    .summary = "A process-data SM whose DefaultSize is smaller than its default PDOs",
+    .rationale =
+        "DefaultSize is the length an SM starts with (ETG.2000 Sm@DefaultSize; the SII builder copies it into the SII "
+        "SyncM category). Masters size a process-data SM from the PDOs assigned to it, so they still exchange all of "
+        "it (SOEM recomputes the SM length from the PDO mapping; TwinCAT from the PDO assignment), but a tool that "
+        "takes the SyncM category as it stands cuts the data short, and the value is plainly stale: Beckhoff's "
+        "EL4102 revision 0x03F8 has DefaultSize 2 for 4 bytes of outputs, revision 0x03F9 has 4. A warning. A "
+        "DefaultSize larger than the PDOs is not reported: it is the room the firmware reserves (the largest mapping "
+        "it accepts). DefaultSize 0 is sm-size-zero's concern, and slot devices take their PDOs from modules.",
+    .bad_example =
+        "<Sm DefaultSize=\"2\" StartAddress=\"#x1100\" ControlByte=\"#x24\" Enable=\"1\">Outputs</Sm> … <RxPdo Sm=\"2\"> "
+        "(two INT entries)",
+    .good_example =
+        "<Sm DefaultSize=\"4\" StartAddress=\"#x1100\" ControlByte=\"#x24\" Enable=\"1\">Outputs</Sm> … <RxPdo Sm=\"2\"> "
+        "(two INT entries)",
+    .check = check_default_size_pdo,
+};
+
 // ---- sm-size-range --------------------------------------------------------------------------
 
 void check_size_range(const EsiDocument& document, RuleContext& context) {
@@ -338,12 +394,15 @@ void check_size_range(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule sm_size_range{
     .id = "sm-size-range",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "SM sizes outside MinSize <= DefaultSize <= MaxSize",
     .rationale =
-        "MinSize and MaxSize bound the length a master may configure, and DefaultSize is what it uses without a "
-        "reason to change it (ETG.2000 Sm attributes). A default outside the bounds, or MinSize above MaxSize, leaves "
-        "no valid configuration; configuration tools clamp differently.",
+        "MinSize and MaxSize bound the length a user may configure in a configuration tool, and DefaultSize is what "
+        "the master starts the SyncManager with (ETG.2000 Sm attributes; the SII builder writes DefaultSize into the "
+        "SII mailbox words, which IgH and SOEM take). A default outside the bounds, or MinSize above MaxSize, leaves no "
+        "consistent range to edit in, and configuration tools clamp differently; the device still runs with "
+        "DefaultSize (Beckhoff FC1100: MaxSize 256 with DefaultSize 1024, the SM addresses laid out for 1024). "
+        "Inconsistent but tolerated: a warning. A DefaultSize that does not fit the ESC memory is sm-overlap's error.",
     .bad_example =
         "<Sm MinSize=\"34\" MaxSize=\"128\" DefaultSize=\"256\" StartAddress=\"#x1000\" ControlByte=\"#x26\" "
         "Enable=\"1\">MBoxOut</Sm>",
@@ -380,14 +439,15 @@ void check_mailbox_size(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule sm_mailbox_size{
     .id = "sm-mailbox-size",
-    .default_severity = Severity::warning,
+    .default_severity = Severity::error,
     .summary = "Mailbox SM without DefaultSize or too small",
     .rationale =
         "The standard mailbox offset and size in SII words 0x18-0x1B come from the MBoxOut/MBoxIn SMs' StartAddress "
         "and DefaultSize (ETG.2010; CTT TF-1300 2-12), so a mailbox SM without DefaultSize yields a mailbox of 0 "
-        "bytes. A mailbox message is a 6-byte header plus data; an expedited CoE SDO needs 6 + 2 + 8 = 16 bytes "
-        "(ETG.1000.6 mailbox and SDO layout; STÖBER ECS 5000 manual §7.2 'Mailbox-Header 6 Byte, CoE-Header 2 Byte, "
-        "Expedited SDO-Message 8 Byte').",
+        "bytes, which masters take as no mailbox at all (SOEM configures the mailbox SMs only when the SII mailbox "
+        "length is above 0). A mailbox message is a 6-byte header plus data; an expedited CoE SDO needs 6 + 2 + 8 = 16 "
+        "bytes (ETG.1000.6 mailbox and SDO layout; STÖBER ECS 5000 manual §7.2 'Mailbox-Header 6 Byte, CoE-Header 2 "
+        "Byte, Expedited SDO-Message 8 Byte'). Either way no mailbox protocol works: an error.",
     .bad_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" Enable=\"1\">MBoxOut</Sm>",
     .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
     .check = check_mailbox_size,
@@ -461,15 +521,17 @@ void check_1c00(const EsiDocument& document, RuleContext& context) {
 
 constexpr Rule sm_1c00_mismatch{
     .id = "sm-1c00-mismatch",
-    .default_severity = Severity::error,
+    .default_severity = Severity::warning,
     .summary = "0x1C00 communication types disagree with the Sm list",
     .rationale =
         "0x1C00 sub n gives the type of SM n-1: 1 mailbox receive, 2 mailbox send, 3 process data output, 4 process "
         "data input, 0 unused (ETG.1000.6 object 0x1C00; the item C series and Afag SE-Power EtherCAT manuals "
-        "§6.1.2.2). Masters read it over SDO to decide which SM carries the PDO assignment 0x1C12/0x1C13; a copy that "
-        "disagrees with the Sm elements makes the master configure the wrong SM. Swapped SM2/SM3 types in "
-        "SSC-generated firmware kept devices out of OP (OpenEtherCATsociety/SOEM #401). Defaults are read from "
-        "DefaultValue or DefaultData.",
+        "§6.1.2.2). Masters configure the SyncManagers from the ESI Sm elements or the SII SyncM category, and those "
+        "that consult 0x1C00 read it from the device over SDO, never from these offline defaults; a default that "
+        "disagrees with the Sm list is a stale copy (Beckhoff CU2508, a mailbox-only device, still lists SM2/SM3 as "
+        "process-data SMs). Where the ESI and the firmware come from the same generator, it can also announce a "
+        "firmware whose own 0x1C00 is wrong: swapped SM2/SM3 types in SSC-generated firmware kept devices out of OP "
+        "(OpenEtherCATsociety/SOEM #401). A warning. Defaults are read from DefaultValue or DefaultData.",
     .bad_example =
         "<Sm ...>Outputs</Sm> (SM2) ... 0x1C00 <SubItem><Name>SubIndex 003</Name><Info><DefaultValue>4</DefaultValue>",
     .good_example =
@@ -488,6 +550,7 @@ void add_sm(std::vector<Rule>& out) {
         sm_overlap,
         sm_size_zero,
         sm_size_range,
+        sm_default_size_pdo,
         sm_mailbox_size,
         sm_1c00_mismatch,
     });

@@ -50,9 +50,11 @@ constexpr Rule xml_hex_prefix{
     .default_severity = Severity::warning,
     .summary = "Hex number written with the C prefix 0x",
     .rationale =
-        "ESI hex numbers are written `#x…`; `0x…` is not a valid HexDecValue and strict parsers (and the ETG "
-        "schema) reject it. esi-lint accepts it so the rest of the file can be checked (ETG.2000 schema, "
-        "HexDecValue; XzuluX/EtherCAT.NET #48 shows parsers that expect one notation only).",
+        "ESI hex numbers are written `#x…`; `0x…` is not a valid HexDecValue, so the ETG schema rejects it and "
+        "parsers that expect one notation may fail on it (ETG.2000 schema, HexDecValue; XzuluX/EtherCAT.NET #48 shows "
+        "parsers that expect one notation only). The value itself is unambiguous: a vendor spelling, a warning. "
+        "esi-lint reads the number all the same, so the rest of the file is checked; a number that cannot be read "
+        "(`#x0x607F`) is xml-number-format's error.",
     .bad_example = "<Id>0xF3F</Id>",
     .good_example = "<Id>#xF3F</Id>",
 };
@@ -85,7 +87,8 @@ constexpr Rule xml_missing_element{
     .summary = "An element the schema requires is missing",
     .rationale =
         "A PDO without Index, an Entry without BitLen or an Object without Index cannot be mapped or addressed; "
-        "the ETG schema requires these elements (ETG.2000 PdoType, EntryType, ObjectType).",
+        "the ETG schema requires these elements (ETG.2000 PdoType, EntryType, ObjectType). A PDO of the form before "
+        "ETG.2000, which names its description with Ref= instead, is pdo-legacy-ref's finding, once per file.",
     .bad_example = "<RxPdo Sm=\"2\"><Name>Outputs</Name></RxPdo>",
     .good_example = "<RxPdo Sm=\"2\"><Index>#x1600</Index><Name>Outputs</Name></RxPdo>",
 };
@@ -97,7 +100,8 @@ constexpr Rule xml_unknown_root{
     .rationale =
         "An ESI file starts with EtherCATInfo (or EtherCATModule, EtherCATDict, EtherCATInfoList); anything else "
         "is not a device description (ETG.2000 §4; schema files EtherCATInfo.xsd, EtherCATModule.xsd, "
-        "EtherCATDict.xsd).",
+        "EtherCATDict.xsd). EtherCATDiag, the root of ETG diagnosis-message files (EtherCATDiag.xsd, shipped with the "
+        "ETG schema), is an ETG root too: it is read without a finding and has no device to check.",
     .bad_example = "<DeviceInfo>…</DeviceInfo>",
     .good_example = "<EtherCATInfo Version=\"1.17\">…</EtherCATInfo>",
 };

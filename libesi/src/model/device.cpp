@@ -86,6 +86,7 @@ std::string_view root_element_name(DocumentKind kind) {
         case DocumentKind::ethercat_info_list: return "EtherCATInfoList";
         case DocumentKind::ethercat_module: return "EtherCATModule";
         case DocumentKind::ethercat_dict: return "EtherCATDict";
+        case DocumentKind::ethercat_diag: return "EtherCATDiag";
         case DocumentKind::unknown: return "";
     }
     return "";

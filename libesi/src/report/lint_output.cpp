@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "esi/check/registry.hpp"
+#include "esi/check/severity_model.hpp"
 
 namespace esi {
 
@@ -258,6 +259,9 @@ std::string render_rule_list_markdown() {
         "Generated from the rule catalogue (`esi-lint --list-rules --format markdown`); a test keeps this file in sync.\n"
         "Every rule can be switched off or re-graded in `.esi-lint.yaml` (see lint-config.md) and suppressed inline with\n"
         "`<!-- esi-lint: disable=RULE -->`.\n\n"
+        "## Severities\n\n" +
+        std::string(severity_model) +
+        "\n## Catalogue\n\n"
         "| Rule | Default | Summary |\n|---|---|---|\n";
     for (const Rule& r : all_rules()) out += fmt::format("| [`{}`](#{}) | {} | {} |\n", r.id, r.id, to_string(r.default_severity), r.summary);
     for (const Rule& r : all_rules()) {

@@ -90,11 +90,16 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
             if (is(n, "Dictionary") && !doc.dictionary) read_dictionary(doc.dictionary.emplace(), c);
             else keep(doc.root_extras, c, previous);
         });
+    } else if (is(name, "EtherCATDiag")) {
+        // Diagnosis messages (EtherCATDiag.xsd): an ETG root that describes no device.
+        doc.kind = DocumentKind::ethercat_diag;
+        for (pugi::xml_attribute a = root.first_attribute(); a; a = a.next_attribute()) keep(doc.root_extras, a);
+        for_children(root, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(doc.root_extras, c, previous); });
     } else {
         doc.kind = DocumentKind::unknown;
         report(Severity::error, "xml-unknown-root",
                "root element <" + std::string(name) +
-                   "> is not an ESI root (EtherCATInfo, EtherCATInfoList, EtherCATModule or EtherCATDict)",
+                   "> is not an ESI root (EtherCATInfo, EtherCATInfoList, EtherCATModule, EtherCATDict or EtherCATDiag)",
                doc.root_pos);
     }
     return doc;

@@ -145,7 +145,8 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
             if (auto v = u32(c)) p.excluded_sms.push_back(*v);
         } else keep(p.extras, c, previous);
     });
-    if (!has_index) missing(n.name(), "Index", p.pos);
+    // A pre-ETG.2000 PDO names its description with Ref= instead (kept in extras; pdo-legacy-ref).
+    if (!has_index && !n.attribute("Ref")) missing(n.name(), "Index", p.pos);
 }
 
 void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {

@@ -28,7 +28,9 @@ struct EtherCATInfo {
     [[nodiscard]] const Group* find_group(std::string_view type) const;
 };
 
-enum class DocumentKind { ethercat_info, ethercat_info_list, ethercat_module, ethercat_dict, unknown };
+// ethercat_diag: an ETG diagnosis-message file (EtherCATDiag.xsd), which describes no device; its
+// content is kept in root_extras.
+enum class DocumentKind { ethercat_info, ethercat_info_list, ethercat_module, ethercat_dict, ethercat_diag, unknown };
 
 [[nodiscard]] std::string_view root_element_name(DocumentKind kind);
 
@@ -42,7 +44,7 @@ struct EsiDocument {
     std::optional<Dictionary> dictionary;  // ethercat_dict
     std::optional<std::string> dict_version;
     SourcePos root_pos;
-    Extras root_extras;  // attributes and unknown children of an InfoList or Dict root
+    Extras root_extras;  // attributes and unknown children of an InfoList, Dict or Diag root
     // The decoded text, kept so that reports can quote source lines; may be null.
     SourceTextPtr source;
 
