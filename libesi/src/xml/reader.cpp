@@ -15,6 +15,7 @@
 
 #include "esi/encoding.hpp"
 #include "esi/number.hpp"
+#include "xml/well_formed.hpp"
 
 namespace esi {
 
@@ -1132,11 +1133,17 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     // No comments or processing instructions in the tree (for_children relies on it); text before
     // an element's first child is stored in the element itself. A DOCTYPE is kept as a node (pugixml
     // accepts one only before the root element, never inside it) so that it can be reported below.
-    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata | pugi::parse_doctype;
+    // parse_fragment keeps text after the root element as a node, for the well-formedness check.
+    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata | pugi::parse_doctype | pugi::parse_fragment;
     const pugi::xml_parse_result parsed = xml.load_buffer_inplace(buffer.data(), buffer.size(), parse_options, pugi::encoding_utf8);
     if (!parsed) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", describe_parse_error(parsed), path,
                                    error_position(*source, parsed));
+        return result;
+    }
+    if (const auto fault = find_well_formedness_fault(source->text(), xml, buffer.data())) {
+        result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: " + fault->message, path,
+                                   source->position_of(fault->offset));
         return result;
     }
     // A DOCTYPE has no place in an ESI file (the ETG schema defines the format) and is the
