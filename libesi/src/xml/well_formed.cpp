@@ -78,57 +78,82 @@ constexpr std::array<std::uint16_t, 256> classes = make_classes();
 
 inline std::uint16_t class_of(char c) { return classes[static_cast<Byte>(c)]; }
 
-// The next byte of class `candidate` at or after p, or end.
-const char* next_candidate_scalar(const char* p, const char* end) {
-    while (p < end && !(class_of(*p) & candidate)) ++p;
+// A set of bytes as two 16-entry tables: byte b is in the set when low[b & 15] & high[b >> 4] is
+// not zero. Each bit of the tables stands for one high nibble (or a group of them) and marks the
+// low nibbles that belong with it. The same tables drive the scalar and the vector search.
+struct ByteSet {
+    std::array<std::uint8_t, 16> low{};
+    std::array<std::uint8_t, 16> high{};
+    [[nodiscard]] constexpr bool contains(Byte b) const { return (low[b & 15] & high[b >> 4]) != 0; }
+};
+
+// Adds the bytes whose class has any of `bits` to the set, one table bit per high nibble in use.
+constexpr ByteSet make_byte_set(const std::array<std::uint16_t, 256>& byte_classes, std::uint16_t bits) {
+    ByteSet set;
+    std::uint8_t next_bit = 1;
+    for (int high = 0; high < 16; ++high) {
+        std::uint8_t lows = 0;
+        for (int low = 0; low < 16; ++low) lows |= (byte_classes[high * 16 + low] & bits) ? 1 : 0;
+        if (!lows) continue;
+        // Rows with every low nibble share one bit; the others need their own (at most seven).
+        bool full = true;
+        for (int low = 0; low < 16; ++low) full = full && (byte_classes[high * 16 + low] & bits);
+        const std::uint8_t bit = full ? 0x80 : next_bit;
+        if (!full) next_bit = static_cast<std::uint8_t>(next_bit << 1);
+        set.high[high] |= bit;
+        for (int low = 0; low < 16; ++low)
+            if (byte_classes[high * 16 + low] & bits) set.low[low] |= bit;
+    }
+    return set;
+}
+
+// True when the set holds exactly the bytes of the classes (a set needing more than seven
+// partial rows would not).
+constexpr bool holds_exactly(const ByteSet& set, const std::array<std::uint16_t, 256>& byte_classes, std::uint16_t bits) {
+    for (int b = 0; b < 256; ++b)
+        if (set.contains(static_cast<Byte>(b)) != ((byte_classes[b] & bits) != 0)) return false;
+    return true;
+}
+
+// Stops of the document walk, and of an attribute value (either quote, '<', '&', and what `check` marks).
+constexpr std::uint16_t value_stops = quot | apos | lt | amp | check;
+constexpr ByteSet candidate_bytes = make_byte_set(classes, candidate);
+constexpr ByteSet value_stop_bytes = make_byte_set(classes, value_stops);
+static_assert(holds_exactly(candidate_bytes, classes, candidate));
+static_assert(holds_exactly(value_stop_bytes, classes, value_stops));
+
+// The first byte of `set` in [p, end), or end.
+const char* find_scalar(const char* p, const char* end, const ByteSet& set) {
+    while (p < end && !set.contains(static_cast<Byte>(*p))) ++p;
     return p;
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-// The same, 32 bytes per step: each byte's class is looked up by its two nibbles (vpshufb) and
-// the two results are ANDed; the bits encode the candidate set by high nibble:
-//   bit 0: 0x0_ controls except tab, LF, CR     bit 1: 0x1_ controls and every byte >= 0x80
-//   bit 2: '!' '&' (0x21, 0x26)                  bit 3: '=' '?' (0x3D, 0x3F)      bit 4: ']' (0x5D)
-// This walk is the whole cost of the check on ordinary files, and most of the text has no
-// candidate in 32 bytes, so it runs at a fraction of an instruction per byte.
-constexpr std::array<std::uint8_t, 16> high_nibble_bits = {1, 2, 4, 8, 0, 16, 0, 0, 2, 2, 2, 2, 2, 2, 2, 2};
-constexpr std::array<std::uint8_t, 16> make_low_nibble_bits() {
-    std::array<std::uint8_t, 16> bits{};
-    for (int low = 0; low < 16; ++low) {
-        bits[low] = 2;
-        if (low != 0x9 && low != 0xA && low != 0xD) bits[low] |= 1;
-        if (low == 0x1 || low == 0x6) bits[low] |= 4;
-        if (low == 0xD || low == 0xF) bits[low] |= 8;
-        if (low == 0xD) bits[low] |= 16;
-    }
-    return bits;
-}
-constexpr std::array<std::uint8_t, 16> low_nibble_bits = make_low_nibble_bits();
-
-[[gnu::target("avx2")]] const char* next_candidate_avx2(const char* p, const char* end) {
-    const __m256i low_lut =
-        _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(low_nibble_bits.data())));
-    const __m256i high_lut =
-        _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(high_nibble_bits.data())));
+// The same, 32 bytes per step: both nibbles of every byte are looked up at once (vpshufb) and
+// ANDed. On ordinary files most 32-byte blocks hold no stop, so this runs at a fraction of an
+// instruction per byte; it is most of the check's cost.
+[[gnu::target("avx2")]] const char* find_avx2(const char* p, const char* end, const ByteSet& set) {
+    const __m256i low_table = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(set.low.data())));
+    const __m256i high_table = _mm256_broadcastsi128_si256(_mm_loadu_si128(reinterpret_cast<const __m128i*>(set.high.data())));
     const __m256i nibble = _mm256_set1_epi8(0x0F);
     while (end - p >= 32) {
         const __m256i v = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(p));
-        const __m256i low = _mm256_shuffle_epi8(low_lut, _mm256_and_si256(v, nibble));
-        const __m256i high = _mm256_shuffle_epi8(high_lut, _mm256_and_si256(_mm256_srli_epi16(v, 4), nibble));
+        const __m256i low = _mm256_shuffle_epi8(low_table, _mm256_and_si256(v, nibble));
+        const __m256i high = _mm256_shuffle_epi8(high_table, _mm256_and_si256(_mm256_srli_epi16(v, 4), nibble));
         const __m256i none = _mm256_cmpeq_epi8(_mm256_and_si256(low, high), _mm256_setzero_si256());
         const auto hits = ~static_cast<std::uint32_t>(_mm256_movemask_epi8(none));
         if (hits != 0) return p + __builtin_ctz(hits);
         p += 32;
     }
-    return next_candidate_scalar(p, end);
+    return find_scalar(p, end, set);
 }
 
-const char* next_candidate(const char* p, const char* end) {
-    static const auto find = __builtin_cpu_supports("avx2") ? next_candidate_avx2 : next_candidate_scalar;
-    return find(p, end);
+const char* find_first(const char* p, const char* end, const ByteSet& set) {
+    static const auto find = __builtin_cpu_supports("avx2") ? find_avx2 : find_scalar;
+    return find(p, end, set);
 }
 #else
-const char* next_candidate(const char* p, const char* end) { return next_candidate_scalar(p, end); }
+const char* find_first(const char* p, const char* end, const ByteSet& set) { return find_scalar(p, end, set); }
 #endif
 
 // [2] Char
@@ -260,7 +285,21 @@ private:
     // Advances until a byte of class `stops` (or the end); a forbidden character on the way is a fault.
     bool scan_until(std::uint16_t stops);
     bool checked_character();  // p_ at a `check` byte: a fault, or U+EFxx stepped over
-    bool name(std::string_view& out, const char* what);
+    // [5] Name. ASCII names, nearly all of them, in a tight loop (the NUL after the text ends it);
+    // the rest out of line.
+    bool name(std::string_view& out, const char* what) {
+        const char* start = p_;
+        if (class_of(*p_) & name_start) {
+            ++p_;
+            while (class_of(*p_) & name_char) ++p_;
+            if (!(class_of(*p_) & non_ascii)) {
+                out = std::string_view(start, static_cast<std::size_t>(p_ - start));
+                return true;
+            }
+        }
+        return name_beyond_ascii(start, out, what);
+    }
+    bool name_beyond_ascii(const char* start, std::string_view& out, const char* what);
     bool nmtoken();
     bool keyword_then_space(std::string_view keyword);
     bool quoted_literal(std::string_view& out, const char* what);
@@ -410,18 +449,8 @@ bool Scanner::scan_until(std::uint16_t stops) {
     }
 }
 
-bool Scanner::name(std::string_view& out, const char* what) {
-    // ASCII names, nearly all of them, in a tight loop; the NUL after the text ends it.
-    const char* start = p_;
-    if (class_of(*p_) & name_start) {
-        ++p_;
-        while (class_of(*p_) & name_char) ++p_;
-        if (!(class_of(*p_) & non_ascii)) {
-            out = std::string_view(start, static_cast<std::size_t>(p_ - start));
-            return true;
-        }
-    }
-    // A name with characters beyond ASCII: decoded and checked against [4] and [4a].
+// Names beyond ASCII: each character decoded and checked against [4] and [4a].
+bool Scanner::name_beyond_ascii(const char* start, std::string_view& out, const char* what) {
     for (bool first = p_ == start; p_ < end_ && (class_of(*p_) & non_ascii); first = false) {
         int length = 0;
         const std::uint32_t cp = decode_utf8(p_, end_, length);
@@ -507,7 +536,7 @@ bool Scanner::document() {
 bool Scanner::walk() {
     const char* known = p_;
     const char* c = p_;
-    while ((c = next_candidate(c, end_)) < end_) {
+    while ((c = find_first(c, end_, candidate_bytes)) < end_) {
         if (class_of(*c) & check) {  // a forbidden character wherever it stands, or a harmless 0xEF
             p_ = c;
             if (!checked_character()) return false;
@@ -724,9 +753,8 @@ bool Scanner::attribute_value(std::string_view attribute) {
     const char q = peek();
     if (q != '"' && q != '\'') return fail(p_, "the value of attribute " + quoted(attribute) + " must be quoted");
     const char* start = p_++;
-    const std::uint16_t closing = q == '"' ? quot : apos;
     for (;;) {
-        if (!scan_until(closing | lt | amp)) return false;
+        p_ = find_first(p_, end_, value_stop_bytes);
         if (at_end()) return fail(start, "the value of attribute " + quoted(attribute) + " is not closed");
         const char c = *p_;
         if (c == q) {
@@ -736,9 +764,11 @@ bool Scanner::attribute_value(std::string_view attribute) {
         if (c == '<') return fail(p_, "'<' inside the value of attribute " + quoted(attribute) + " (write &lt;)");
         if (c == '&') {
             if (!reference(true)) return false;
-            continue;
+        } else if (class_of(c) & check) {
+            if (!checked_character()) return false;
+        } else {
+            ++p_;  // the other quote character
         }
-        ++p_;  // the other quote character
     }
 }
 
