@@ -348,6 +348,12 @@ class Checker {
 public:
     explicit Checker(const std::string& text) : text_(text) {}
 
+    std::optional<WellFormednessFault> run_content() {
+        Scanner scanner(*this, text_, nullptr);
+        scanner.entity_content();
+        return std::move(fault_);
+    }
+
     std::optional<WellFormednessFault> run(const pugi::xml_document& parsed, const char* parse_buffer) {
         Scanner scanner(*this, text_, nullptr);
         scanner.document();
@@ -1244,6 +1250,11 @@ std::optional<WellFormednessFault> find_well_formedness_fault(const std::string&
                                                               const char* parse_buffer) {
     Checker checker(text);
     return checker.run(parsed, parse_buffer);
+}
+
+std::optional<WellFormednessFault> find_content_fault(const std::string& text) {
+    Checker checker(text);
+    return checker.run_content();
 }
 
 }  // namespace esi

@@ -32,4 +32,9 @@ struct WellFormednessFault {
 [[nodiscard]] std::optional<WellFormednessFault> find_well_formedness_fault(const std::string& text, const pugi::xml_document& parsed,
                                                                           const char* parse_buffer);
 
+// The same for XML given as element content rather than as a document (the xml: snippets of a
+// YAML device source): elements, text and references, balanced, no DOCTYPE, so only the five
+// predefined entities. Needs no pugixml tree.
+[[nodiscard]] std::optional<WellFormednessFault> find_content_fault(const std::string& text);
+
 }  // namespace esi

@@ -2,6 +2,8 @@
 
 #include <pugixml.hpp>
 
+#include "xml/well_formed.hpp"
+
 namespace esi::yaml {
 
 namespace {
@@ -36,6 +38,14 @@ void read_element(Reader& reader, const Node& text_node, const std::string& afte
         reader.error(text_node, "yaml-xml",
                      "'" + std::string(what) + "' is not well-formed XML at character " + std::to_string(parsed.offset + 1) +
                          ": " + parsed.description());
+        return;
+    }
+    // What pugixml tolerates (a repeated attribute, '<' in a value, ...) would be written into
+    // the generated ESI file as it is.
+    if (const auto fault = find_content_fault(*text)) {
+        reader.error(text_node, "yaml-xml",
+                     "'" + std::string(what) + "' is not well-formed XML at character " + std::to_string(fault->offset + 1) + ": " +
+                         fault->message);
         return;
     }
     std::string previous = after;
