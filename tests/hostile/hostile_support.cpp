@@ -1,6 +1,8 @@
 #include "hostile/hostile_support.hpp"
 
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netinet/in.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -297,6 +299,26 @@ std::uint32_t line_of(const std::string& text, const std::string& needle) {
     for (std::size_t i = 0; i < at; ++i)
         if (text[i] == '\n') ++line;
     return line;
+}
+
+Listener::Listener() {
+    fd_ = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    if (fd_ < 0 || bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || listen(fd_, 8) != 0 ||
+        getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length) != 0)
+        ADD_FAILURE() << "cannot listen on 127.0.0.1";
+    port_ = ntohs(address.sin_port);
+}
+
+Listener::~Listener() { close(fd_); }
+
+bool Listener::anyone_connected() const {
+    const int client = accept(fd_, nullptr, nullptr);
+    if (client >= 0) close(client);
+    return client >= 0;
 }
 
 }  // namespace esi::test
