@@ -15,6 +15,7 @@
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/io/atomic_write.hpp"
+#include "esi/io/same_file.hpp"
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/yaml/export.hpp"
@@ -51,6 +52,10 @@ Source load(const fs::path& path) {
 
 // --import ESI.xml -o SOURCE.yaml: an ESI file -> the YAML device source (docs/yaml-import.md).
 int import_esi(const std::string& esi_path, const std::string& output, const std::optional<esi::DeviceSelector>& device) {
+    if (const esi::Diagnostics same = esi::refuse_output_over_input(output, {esi_path}); same.has_errors()) {
+        print(same);
+        return exit_usage;
+    }
     esi::ReadResult read = esi::read_esi_file(esi_path);
     print(read.diagnostics);
     if (!read.document || read.diagnostics.has_errors()) return exit_usage;

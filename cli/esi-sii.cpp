@@ -13,6 +13,7 @@
 
 #include "esi/device_selector.hpp"
 #include "esi/io/atomic_write.hpp"
+#include "esi/io/same_file.hpp"
 #include "esi/sii/build.hpp"
 #include "esi/sii/check.hpp"
 #include "esi/sii/decode.hpp"
@@ -97,6 +98,10 @@ int run_build(const std::string& input, const std::string& output, const std::st
             print(stderr, fmt::format("esi-sii build: --device: {}\n", error));
             return exit_usage;
         }
+    }
+    if (const esi::Diagnostics same = esi::refuse_output_over_input(output, {input}); same.has_errors()) {
+        print(stderr, esi::sii::render_diagnostics_text(same));
+        return exit_usage;
     }
     const std::optional<esi::EsiDocument> document = load_document(input);
     if (!document) return exit_usage;
