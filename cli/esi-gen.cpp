@@ -15,6 +15,7 @@
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/io/atomic_write.hpp"
+#include "esi/io/leftovers.hpp"
 #include "esi/io/same_file.hpp"
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
@@ -81,6 +82,7 @@ std::optional<fs::path> executable_path(const char* argv0) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    esi::install_leftover_cleanup();
     CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
     std::string source, output_dir, dump_model, device, prefix, import_path;
     std::vector<std::string> only, template_dirs;
@@ -185,7 +187,7 @@ int main(int argc, char** argv) {
     esi::codegen::GenerateResult generated = esi::codegen::generate_outputs(*loaded.document, options);
     print(generated.diagnostics);
     if (generated.diagnostics.has_errors()) return exit_failed;
-    const esi::Diagnostics written = esi::write_files_atomically(generated.files);
+    const esi::Diagnostics written = esi::write_output_set(output_dir, generated.files);
     print(written);
     return written.has_errors() ? exit_failed : exit_ok;
 }

@@ -13,6 +13,7 @@
 
 #include "esi/device_selector.hpp"
 #include "esi/io/atomic_write.hpp"
+#include "esi/io/leftovers.hpp"
 #include "esi/io/same_file.hpp"
 #include "esi/sii/build.hpp"
 #include "esi/sii/check.hpp"
@@ -185,6 +186,7 @@ int run_check(const std::string& esi_path, const std::string& image_path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    esi::install_leftover_cleanup();
     CLI::App app{"esi-sii: build, dump and check SII EEPROM images"};
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string(esi::version()));
