@@ -68,6 +68,15 @@ void add_xml(std::vector<Rule>& out) {
         "<!DOCTYPE EtherCATInfo [<!ENTITY vendor SYSTEM \"file:///etc/passwd\">]>",
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?> (no DOCTYPE)"});
     out.push_back(Rule{
+        "xml-xinclude", Severity::error, "An XInclude element, which ESI does not know",
+        "ETG.2000 defines no inclusion mechanism: masters and configuration tools read xi:include as an unknown "
+        "element, not as the content it names (W3C XML Inclusions is an optional layer above XML 1.0). esi-lint "
+        "does not resolve it (that would read or fetch other files), and esi-gen would copy the element into "
+        "generated ESI and YAML with an href that no longer points anywhere, so the file is refused until the "
+        "include is expanded (xmllint --xinclude).",
+        "<Dictionary><xi:include xmlns:xi=\"http://www.w3.org/2001/XInclude\" href=\"objects.xml\"/></Dictionary>",
+        "<Dictionary><Objects>…</Objects></Dictionary>"});
+    out.push_back(Rule{
         "xml-schema", Severity::error, "The file does not validate against the ETG schema (--xsd)",
         "Reported only with --xsd DIR: libxml2 validates the file against the ETG schema files in DIR "
         "(EtherCATInfo.xsd, EtherCATModule.xsd, EtherCATDict.xsd). Masters and the ETG conformance test tool "

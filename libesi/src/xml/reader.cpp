@@ -16,6 +16,7 @@
 #include "esi/encoding.hpp"
 #include "esi/number.hpp"
 #include "xml/well_formed.hpp"
+#include "xml/xinclude.hpp"
 
 namespace esi {
 
@@ -1166,6 +1167,7 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
         result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: no root element", path, SourcePos{1, 1});
         return result;
     }
+    report_xinclude(*source, xml, buffer.data(), result.diagnostics);
     Reader reader(*source, buffer, result.diagnostics, options);
     EsiDocument doc = reader.read_document(root);
     doc.path = path;

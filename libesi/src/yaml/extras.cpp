@@ -3,6 +3,7 @@
 #include <pugixml.hpp>
 
 #include "xml/well_formed.hpp"
+#include "xml/xinclude.hpp"
 
 namespace esi::yaml {
 
@@ -47,6 +48,12 @@ void read_element(Reader& reader, const Node& text_node, const std::string& afte
                      "'" + std::string(what) + "' is not well-formed XML at character " + std::to_string(fault->offset + 1) + ": " +
                          fault->message);
         return;
+    }
+    for (const pugi::xml_node top : doc.children()) {
+        for (const pugi::xml_node element : find_xinclude_elements(*text, top)) {
+            reader.error(text_node, "yaml-xml", "'" + std::string(what) + "' holds " + describe_xinclude(element));
+            return;
+        }
     }
     std::string previous = after;
     bool any = false;
