@@ -66,7 +66,12 @@ std::filesystem::path temporary_name(const std::filesystem::path& target) {
 bool stage_named(const std::filesystem::path& target, const std::string& content, Staged& staged, std::string& error) {
     for (int attempt = 0; attempt < 16; ++attempt) {
         const std::filesystem::path temporary = temporary_name(target);
-        const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+        int fd = -1;
+        {
+            const io_detail::DeferredSignals deferred;  // created and registered as one step
+            fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+            if (fd >= 0) staged.leftover = LeftoverRegistration(temporary, LeftoverKind::file);
+        }
         if (fd < 0) {
             if (errno == EEXIST) continue;
             error = error_text();
@@ -76,10 +81,10 @@ bool stage_named(const std::filesystem::path& target, const std::string& content
         if (::close(fd) != 0 && written) error = error_text();
         if (!written || !error.empty()) {
             ::unlink(temporary.c_str());
+            staged.leftover.release();
             return false;
         }
         staged.named = temporary;
-        staged.leftover = LeftoverRegistration(temporary, LeftoverKind::file);
         return true;
     }
     error = "cannot create a temporary file";
@@ -121,6 +126,7 @@ bool commit(const std::filesystem::path& target, Staged& staged, std::string& er
         const std::string fd_path = "/proc/self/fd/" + std::to_string(staged.fd);
         for (int attempt = 0; attempt < 16 && staged.named.empty(); ++attempt) {
             const std::filesystem::path temporary = temporary_name(target);
+            const io_detail::DeferredSignals deferred;  // named and registered as one step
             if (::linkat(AT_FDCWD, fd_path.c_str(), AT_FDCWD, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) {
                 staged.named = temporary;
                 staged.leftover = LeftoverRegistration(temporary, LeftoverKind::file);
@@ -135,6 +141,7 @@ bool commit(const std::filesystem::path& target, Staged& staged, std::string& er
         ::close(staged.fd);
         staged.fd = -1;
     }
+    const io_detail::DeferredSignals deferred;  // renamed and forgotten as one step
     if (std::rename(staged.named.c_str(), target.c_str()) != 0) {
         error = error_text();
         return false;

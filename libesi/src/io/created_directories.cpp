@@ -19,6 +19,7 @@ bool CreatedDirectories::create(const fs::path& dir, Diagnostics& diagnostics) {
         if (p == p.parent_path()) break;
     }
     for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
+        const DeferredSignals deferred;  // made and registered as one step
         if (::mkdir(it->c_str(), 0777) == 0) {
             created_.push_back({*it, LeftoverRegistration(*it, LeftoverKind::directory)});
         } else if (errno != EEXIST) {  // EEXIST: a concurrent run made it, so it is not ours to remove

@@ -2,6 +2,8 @@
 // The registry behind esi/io/leftovers.hpp. A fixed table of slots holding paths in place, so
 // that the signal handler reads them without allocating and a slot is never freed under it.
 
+#include <signal.h>
+
 #include <filesystem>
 
 namespace esi::io_detail {
@@ -25,6 +27,20 @@ public:
 
 private:
     int slot_ = -1;
+};
+
+// Holds back SIGINT, SIGTERM and SIGHUP for its lifetime (on this thread), so that creating a
+// file or directory and registering it happen as one step: a signal in between would leave
+// something the handler does not know of. Only around calls that return at once.
+class DeferredSignals {
+public:
+    DeferredSignals();
+    ~DeferredSignals();
+    DeferredSignals(const DeferredSignals&) = delete;
+    DeferredSignals& operator=(const DeferredSignals&) = delete;
+
+private:
+    sigset_t previous_;
 };
 
 }  // namespace esi::io_detail

@@ -1,5 +1,6 @@
 #include "esi/io/leftovers.hpp"
 
+#include <pthread.h>
 #include <signal.h>
 #include <unistd.h>
 
@@ -63,6 +64,15 @@ void LeftoverRegistration::release() noexcept {
     slots[slot_].state.store(free_slot, std::memory_order_release);
     slot_ = -1;
 }
+
+DeferredSignals::DeferredSignals() {
+    sigset_t deferred;
+    sigemptyset(&deferred);
+    for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&deferred, signal_number);
+    pthread_sigmask(SIG_BLOCK, &deferred, &previous_);
+}
+
+DeferredSignals::~DeferredSignals() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
 
 }  // namespace io_detail
 
