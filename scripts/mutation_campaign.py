@@ -363,6 +363,14 @@ def write(path, data):
     return path
 
 
+def mutated_source(rng, corpus, esi, device, workdir, yaml_share):
+    """A mutated device source for esi-gen or esi-sii build: YAML (a share of the runs) or ESI; with
+    the --device selection that goes with it (none for YAML: one device per source)."""
+    if rng.random() < yaml_share and corpus.yaml:
+        return write(os.path.join(workdir, "device.yaml"), mutate_yaml(rng, rng.choice(corpus.yaml)[1])), []
+    return write(os.path.join(workdir, "device.xml"), mutate_xml(rng, esi, corpus)), device
+
+
 def plan_run(tool, rng, corpus, tools, workdir):
     """Builds the inputs of run (tool, rng) in workdir and returns the Run."""
     name, esi, codes = corpus.pick_esi(rng)
@@ -379,12 +387,7 @@ def plan_run(tool, rng, corpus, tools, workdir):
         return Run(tool, [tools["esi-diff"], "--format", fmt] + pair + (device if rng.random() < 0.3 else []), pair,
                    json_output=fmt == "json")
     if tool == "esi-gen":
-        if rng.random() < 0.5 and corpus.yaml:
-            source = write(os.path.join(workdir, "device.yaml"), mutate_yaml(rng, rng.choice(corpus.yaml)[1]))
-            selection = []
-        else:
-            source = write(os.path.join(workdir, "device.xml"), mutate_xml(rng, esi, corpus))
-            selection = device
+        source, selection = mutated_source(rng, corpus, esi, device, workdir, yaml_share=0.5)
         out = os.path.join(workdir, "out")
         only = ["--only", ",".join(rng.sample(["esi", "cpp", "c", "soes", "structs", "sii"], rng.randint(1, 3)))] if rng.random() < 0.5 else []
         return Run(tool, [tools["esi-gen"], source, "-o", out] + selection + only, [source], output=out, output_is_dir=True)
@@ -393,12 +396,7 @@ def plan_run(tool, rng, corpus, tools, workdir):
         out = os.path.join(workdir, "device.yaml")
         return Run(tool, [tools["esi-gen"], "--import", source, "-o", out] + device, [source], output=out)
     if tool == "esi-sii-build":
-        if rng.random() < 0.3 and corpus.yaml:
-            source = write(os.path.join(workdir, "device.yaml"), mutate_yaml(rng, rng.choice(corpus.yaml)[1]))
-            selection = []
-        else:
-            source = write(os.path.join(workdir, "device.xml"), mutate_xml(rng, esi, corpus))
-            selection = device
+        source, selection = mutated_source(rng, corpus, esi, device, workdir, yaml_share=0.3)
         out = os.path.join(workdir, "image." + rng.choice(["bin", "hex", "c"]))
         fmt = os.path.splitext(out)[1][1:]
         return Run(tool, [tools["esi-sii"], "build", source, "-o", out, "--format", fmt] + selection, [source], output=out)

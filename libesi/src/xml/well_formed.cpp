@@ -285,6 +285,7 @@ private:
     // Advances until a byte of class `stops` (or the end); a forbidden character on the way is a fault.
     bool scan_until(std::uint16_t stops);
     bool checked_character();  // p_ at a `check` byte: a fault, or U+EFxx stepped over
+    bool characters_until(std::uint16_t stop, std::string_view end, const char* start, const char* what);
     // [5] Name. ASCII names, nearly all of them, in a tight loop (the NUL after the text ends it);
     // the rest out of line.
     bool name(std::string_view& out, const char* what) {
@@ -684,11 +685,16 @@ bool Scanner::processing_instruction() {
         return true;
     }
     if (!skip_space()) return fail(p_, "whitespace expected after the processing instruction target");
+    return characters_until(question, "?>", start, "the processing instruction");
+}
+
+// Characters up to and over `end` (whose first byte has class `stop`), each one checked.
+bool Scanner::characters_until(std::uint16_t stop, std::string_view end, const char* start, const char* what) {
     for (;;) {
-        if (!scan_until(question)) return false;
-        if (at_end()) return fail(start, "the processing instruction is not closed");
-        if (peek(1) == '>') {
-            p_ += 2;
+        if (!scan_until(stop)) return false;
+        if (at_end()) return fail(start, std::string(what) + " is not closed");
+        if (starts(end)) {
+            p_ += end.size();
             return true;
         }
         ++p_;
@@ -699,15 +705,7 @@ bool Scanner::processing_instruction() {
 bool Scanner::cdata_section() {
     const char* start = p_;
     p_ += 9;
-    for (;;) {
-        if (!scan_until(rsqb)) return false;
-        if (at_end()) return fail(start, "the CDATA section is not closed");
-        if (starts("]]>")) {
-            p_ += 3;
-            return true;
-        }
-        ++p_;
-    }
+    return characters_until(rsqb, "]]>", start, "the CDATA section");
 }
 
 // [40] STag / [44] EmptyElemTag; p_ at '<'.
