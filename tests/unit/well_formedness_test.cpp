@@ -158,6 +158,42 @@ TEST(WellFormedness, VerdictsAgreeWithXmllint) {
     for (const auto& [name, xml] : well_formed()) EXPECT_TRUE(xmllint_accepts(xml)) << name;
 }
 
+// XML 1.0 section 4.3.3: the bytes must be in the encoding the declaration names. libxml2 agrees
+// on the first three and lets the last two pass (its byte-order mark wins); the specification
+// makes them fatal errors too.
+TEST(WellFormedness, TheEncodingDeclarationMustMatchTheBytes) {
+    const auto utf16 = [](const std::string& ascii) {
+        std::string out = "\xFF\xFE";
+        for (char c : ascii) out += std::string{c, '\0'};
+        return out;
+    };
+    const std::vector<std::pair<std::string, const char*>> refused = {
+        {"<?xml version=\"1.0\" encoding=\"UTF-16\"?><EtherCATInfo/>", "names 'UTF-16', but the document is in 8-bit bytes"},
+        {"<?xml version=\"1.0\" encoding=\"US-ASCII\"?><EtherCATInfo>\xC3\xA9</EtherCATInfo>", "a byte beyond ASCII"},
+        {"<?xml version=\"1.0\" encoding=\"Shift_JIS\"?><EtherCATInfo>\xC3\xA9</EtherCATInfo>", "which is not read"},
+        {"\xEF\xBB\xBF<?xml version=\"1.0\" encoding=\"ISO-8859-1\"?><EtherCATInfo/>", "the byte-order mark says UTF-8"},
+        {utf16("<?xml version=\"1.0\" encoding=\"UTF-8\"?><EtherCATInfo/>"), "the document is in UTF-16"},
+    };
+    for (const auto& [bytes, message] : refused) {
+        SCOPED_TRACE(message);
+        const esi::ReadResult r = esi::read_esi(bytes, "test.xml");
+        EXPECT_FALSE(r.document.has_value());
+        ASSERT_EQ(r.diagnostics.size(), 1u);
+        EXPECT_EQ(r.diagnostics.items()[0].rule, "xml-syntax");
+        EXPECT_NE(r.diagnostics.items()[0].message.find(message), std::string::npos) << r.diagnostics.items()[0].message;
+    }
+    const std::vector<std::string> read = {
+        "<?xml version=\"1.0\" encoding=\"Shift_JIS\"?><EtherCATInfo>ASCII only</EtherCATInfo>",
+        "<?xml version=\"1.0\" encoding=\"iso8859-1\"?><EtherCATInfo>\xE9</EtherCATInfo>",
+        "\xEF\xBB\xBF<?xml version=\"1.0\" encoding=\"utf-8\"?><EtherCATInfo/>",
+        utf16("<?xml version=\"1.0\" encoding=\"UTF-16\"?><EtherCATInfo/>"),
+    };
+    for (const auto& bytes : read) {
+        const esi::ReadResult r = esi::read_esi(bytes, "test.xml");
+        EXPECT_TRUE(r.document.has_value()) << (r.diagnostics.empty() ? std::string() : r.diagnostics.items()[0].message);
+    }
+}
+
 // The cases of issue 16 as in a real file: the fault is reported, and nothing of the rest.
 TEST(WellFormedness, TheSampleWithARepeatedAttributeIsNotRead) {
     const std::string sample = esi::test::read_text(esi::test::source_dir() / "samples" / "esi" / "example-digital-io.xml");

@@ -1142,7 +1142,7 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
                                    error_position(*source, parsed));
         return result;
     }
-    if (const auto fault = find_well_formedness_fault(source->text(), xml, buffer.data())) {
+    if (const auto fault = find_well_formedness_fault(source->text(), decoded.encoding, xml, buffer.data())) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: " + fault->message, path,
                                    source->position_of(fault->offset));
         return result;

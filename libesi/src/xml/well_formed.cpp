@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <initializer_list>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -307,6 +308,7 @@ private:
 
     // ---- markup ---------------------------------------------------------------------------
     bool xml_declaration();
+    bool declared_encoding_holds(std::string_view declared, const char* at);
     bool prolog_item(bool& doctype_seen);
     bool comment();
     bool processing_instruction();
@@ -347,7 +349,13 @@ private:
 
 class Checker {
 public:
-    explicit Checker(const std::string& text) : text_(text) {}
+    Checker(const std::string& text, SourceEncoding encoding) : encoding(encoding), text_(text) {}
+
+    std::size_t first_beyond_ascii() const {
+        for (std::size_t i = 0; i < text_.size(); ++i)
+            if (static_cast<Byte>(text_[i]) >= 0x80) return i;
+        return std::string::npos;
+    }
 
     std::optional<WellFormednessFault> run_content() {
         Scanner scanner(*this, text_, nullptr);
@@ -377,6 +385,7 @@ public:
     std::unordered_map<std::string, Entity, std::hash<std::string>, std::equal_to<>> parameter;
     bool external_subset = false;
     bool unresolved_parameter_entities = false;
+    const SourceEncoding encoding;  // what the decoder found (byte-order mark, UTF-16 shape, declaration)
     bool standalone = false;
     bool doctype_seen = false;
     int entity_depth = 0;
@@ -638,6 +647,7 @@ bool Scanner::xml_declaration() {
             name_ok = ((c | 0x20) >= 'a' && (c | 0x20) <= 'z') || (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '-';
         }
         if (!name_ok) return fail(p_ - value.size() - 1, "encoding name " + quoted(value) + " is malformed");
+        if (!declared_encoding_holds(value, p_ - value.size() - 1)) return false;
         spaced = skip_space();
     }
     if (spaced && starts("standalone")) {
@@ -650,6 +660,36 @@ bool Scanner::xml_declaration() {
     if (!starts("?>")) return fail(p_ > start ? p_ : start, "malformed XML declaration (version, encoding, standalone, in this order)");
     p_ += 2;
     return true;
+}
+
+// Section 4.3.3: a document in another encoding than its declaration names is a fatal error.
+// Where the bytes tell (a byte-order mark, UTF-16, bytes beyond ASCII) the two must agree; the
+// decoder reads UTF-8, UTF-16, ISO-8859-1 and Windows-1252, so a document in any other encoding
+// is refused when it has bytes beyond ASCII (which would be read wrongly), and read when it has none.
+bool Scanner::declared_encoding_holds(std::string_view declared, const char* at) {
+    std::string name(declared);
+    for (char& c : name) c = static_cast<char>(c >= 'a' && c <= 'z' ? c - 32 : c);
+    const auto one_of = [&](std::initializer_list<std::string_view> names) {
+        for (const auto n : names)
+            if (name == n) return true;
+        return false;
+    };
+    const bool wide = one_of({"UTF-16", "UTF-16LE", "UTF-16BE", "UCS-2", "ISO-10646-UCS-2", "UTF-32", "UTF-32LE", "UTF-32BE", "UCS-4",
+                              "ISO-10646-UCS-4"});
+    const SourceEncoding actual = checker_.encoding;
+    const bool utf16 = actual == SourceEncoding::utf16le || actual == SourceEncoding::utf16be;
+    if (wide && !utf16) return fail(at, "the XML declaration names " + quoted(declared) + ", but the document is in 8-bit bytes");
+    if (utf16 && !wide) return fail(at, "the document is in UTF-16, but the XML declaration names " + quoted(declared));
+    if (actual == SourceEncoding::utf8_bom && !one_of({"UTF-8", "UTF8"}))
+        return fail(at, "the byte-order mark says UTF-8, but the XML declaration names " + quoted(declared));
+    if (wide || one_of({"UTF-8", "UTF8", "ISO-8859-1", "ISO8859-1", "LATIN1", "ISO_8859-1", "ISO-8859-15", "WINDOWS-1252", "CP1252"}))
+        return true;
+    const std::size_t beyond = checker_.first_beyond_ascii();
+    if (beyond == std::string::npos) return true;
+    return fail(begin_ + beyond, one_of({"US-ASCII", "ASCII"})
+                                     ? "a byte beyond ASCII in a document whose XML declaration names " + quoted(declared)
+                                     : "the document is in " + quoted(declared) +
+                                           ", which is not read (UTF-8, UTF-16, ISO-8859-1 and Windows-1252 are), and has bytes beyond ASCII");
 }
 
 // [15] Comment ::= '<!--' ((Char - '-') | ('-' (Char - '-')))* '-->'
@@ -1244,14 +1284,14 @@ bool Scanner::parameter_entity_reference() {
 
 }  // namespace
 
-std::optional<WellFormednessFault> find_well_formedness_fault(const std::string& text, const pugi::xml_document& parsed,
-                                                              const char* parse_buffer) {
-    Checker checker(text);
+std::optional<WellFormednessFault> find_well_formedness_fault(const std::string& text, SourceEncoding encoding,
+                                                              const pugi::xml_document& parsed, const char* parse_buffer) {
+    Checker checker(text, encoding);
     return checker.run(parsed, parse_buffer);
 }
 
 std::optional<WellFormednessFault> find_content_fault(const std::string& text) {
-    Checker checker(text);
+    Checker checker(text, SourceEncoding::utf8);
     return checker.run_content();
 }
 

@@ -14,6 +14,8 @@
 
 #include <pugixml.hpp>
 
+#include "esi/encoding.hpp"
+
 namespace esi {
 
 struct WellFormednessFault {
@@ -23,14 +25,15 @@ struct WellFormednessFault {
 
 // The first fault in document order, or nothing for a well-formed document.
 // `text` is the decoded UTF-8 text (valid UTF-8, byte-order mark removed); a std::string because
-// the scan relies on the NUL byte after its end. `parsed` is what pugixml built from it, parsed in
+// the scan relies on the NUL byte after its end. `encoding` is what the bytes were (the XML
+// declaration must agree with it). `parsed` is what pugixml built from it, parsed in
 // place from a copy of `text` at `parse_buffer`, with parse_fragment (which keeps text after the
 // root element as a node) and without error: the check relies on what pugixml verified (balanced
 // tags, ASCII names, quoted attribute values) and looks only where pugixml is lenient.
 // Nothing is expanded, loaded or fetched: the replacement text of an internal entity is checked
 // where the entity is used, once per entity, and an external entity only for where it is used.
-[[nodiscard]] std::optional<WellFormednessFault> find_well_formedness_fault(const std::string& text, const pugi::xml_document& parsed,
-                                                                          const char* parse_buffer);
+[[nodiscard]] std::optional<WellFormednessFault> find_well_formedness_fault(const std::string& text, SourceEncoding encoding,
+                                                                          const pugi::xml_document& parsed, const char* parse_buffer);
 
 // The same for XML given as element content rather than as a document (the xml: snippets of a
 // YAML device source): elements, text and references, balanced, no DOCTYPE, so only the five
