@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "diagnostic_line.hpp"
+#include "out_of_memory.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/diff/diff.hpp"
 #include "esi/diff/output.hpp"
@@ -27,6 +28,7 @@ bool reaches(esi::Verdict verdict, const std::string& fail_on) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    cli::exit_with_code_two_when_out_of_memory("esi-diff");
     CLI::App app{"esi-diff: compare two EtherCAT ESI files semantically and classify every change"};
     std::string old_path;
     std::string new_path;

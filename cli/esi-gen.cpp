@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "diagnostic_line.hpp"
+#include "out_of_memory.hpp"
 #include "esi/codegen/generate.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
@@ -82,6 +83,7 @@ std::optional<fs::path> executable_path(const char* argv0) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    cli::exit_with_code_two_when_out_of_memory("esi-gen");
     esi::install_leftover_cleanup();
     CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
     std::string source, output_dir, dump_model, device, prefix, import_path;

@@ -23,6 +23,7 @@
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/yaml/source.hpp"
+#include "out_of_memory.hpp"
 
 namespace {
 
@@ -186,6 +187,7 @@ int run_check(const std::string& esi_path, const std::string& image_path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    cli::exit_with_code_two_when_out_of_memory("esi-sii");
     esi::install_leftover_cleanup();
     CLI::App app{"esi-sii: build, dump and check SII EEPROM images"};
     app.require_subcommand(1);

@@ -16,6 +16,7 @@ namespace esi::test {
 
 struct ChildOptions {
     std::optional<std::uint64_t> file_size_limit;  // RLIMIT_FSIZE in bytes
+    std::optional<std::uint64_t> address_space_limit;  // RLIMIT_AS in bytes
     bool ignore_sigxfsz = false;                    // write() then fails with EFBIG instead of a kill
     std::optional<std::chrono::microseconds> kill_after;  // SIGKILL the child after this long
     std::string stdin_data;

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <new>
 #include <pugixml.hpp>
 #include <sstream>
 #include <system_error>
@@ -1103,7 +1104,29 @@ ReadResult read_esi(std::string_view bytes, std::string path, const ReadOptions&
     return read_esi_owned(std::string(bytes), std::move(path), options);
 }
 
+namespace {
+ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOptions& options);
+}  // namespace
+
+// Reading holds the text twice and pugixml's tree (64 bytes an element), up to ten times the
+// file for dense markup: a file near the input limit can exhaust a machine's memory. That is an
+// unreadable input (io-error), never an abort.
 ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOptions& options) {
+    const std::size_t size = bytes_in.size();
+    try {
+        return read_unguarded(std::move(bytes_in), path, options);
+    } catch (const std::bad_alloc&) {
+        ReadResult result;
+        result.diagnostics.emplace(Severity::error, "io-error",
+                                   "not enough memory to read this file (" + std::to_string(size >> 20) + " MiB of XML)", path,
+                                   SourcePos{});
+        return result;
+    }
+}
+
+namespace {
+
+ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOptions& options) {
     ReadResult result;
     DecodedText decoded = decode_xml_bytes_owned(std::move(bytes_in));
     auto source = std::make_shared<SourceText>(path, std::move(decoded.utf8));
@@ -1176,6 +1199,8 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     result.document = std::move(doc);
     return result;
 }
+
+}  // namespace
 
 std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
     std::error_code ec;

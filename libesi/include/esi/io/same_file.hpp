@@ -1,6 +1,6 @@
 #pragma once
-// Inputs are never outputs: a tool must not replace a file it reads (esi-gen --import X -o X
-// once replaced an ESI file with its YAML import). An output names an input when both resolve to
+// Inputs are never outputs: a tool must not replace a file it reads (esi-gen --import X -o X would
+// turn an ESI file into its YAML import). An output names an input when both resolve to
 // the same path through symbolic links, or, where both exist, are the same file on disk (the same
 // device and inode: hard links, bind mounts).
 
