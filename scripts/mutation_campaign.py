@@ -17,6 +17,7 @@ Reproducers of every crash, timeout, out-of-memory or violation are kept in OUT/
 The campaign is deterministic for a seed: run i of a tool uses random.Random(f"{seed}/{tool}/{i}").
 
   nice -n 10 scripts/mutation_campaign.py --build build-release --runs 10000 --jobs 2
+  scripts/mutation_campaign.py --replay esi-diff:4711     # the inputs and command of one run
 
 Only the Python standard library is used; prlimit (util-linux) applies the limits and GNU time
 (/usr/bin/time, Debian package time) measures each tool's peak memory.
@@ -506,6 +507,7 @@ def main():
     parser.add_argument("--memory-mb", type=int, default=2048, help="address-space limit per run")
     parser.add_argument("--seed", default="16")
     parser.add_argument("--out", default=os.path.join(ROOT, "build-mutation"), help="work directory; findings in OUT/findings")
+    parser.add_argument("--replay", metavar="TOOL:INDEX", help="only write the inputs of that run to OUT/replay and print its command")
     args = parser.parse_args()
 
     try:
@@ -518,6 +520,15 @@ def main():
             sys.exit(f"mutation_campaign: {path} is missing; build the tools first")
     if shutil.which("prlimit") is None or not os.access(TIME, os.X_OK):
         sys.exit("mutation_campaign: prlimit (util-linux) and GNU time (/usr/bin/time) are needed")
+    if args.replay:
+        tool, index = args.replay.split(":")
+        replay = os.path.join(args.out, "replay")
+        shutil.rmtree(replay, ignore_errors=True)
+        os.makedirs(replay)
+        corpus = Corpus(tools, replay, os.path.abspath(args.shared))
+        run = plan_run(tool, random.Random(f"{args.seed}/{tool}/{index}"), corpus, tools, replay)
+        print(" ".join(run.argv))
+        return 0
     shutil.rmtree(args.out, ignore_errors=True)
     findings = os.path.join(args.out, "findings")
     os.makedirs(findings)
@@ -528,7 +539,7 @@ def main():
           f"{args.memory_mb} MB per run", flush=True)
 
     stats = {t: {"runs": 0, "exit": collections.Counter(), "class": collections.Counter(), "problems": 0, "seconds": [],
-                 "rss_kb": [], "rss_per_mb": []} for t in selected}
+                 "rss_kb": [], "rss_per_mb": [], "extremes": {}} for t in selected}
     lock = threading.Lock()
     slots = list(range(args.jobs))
     started = time.monotonic()
@@ -555,8 +566,14 @@ def main():
                 s["problems"] += len(result["problems"])
                 s["seconds"].append(result["seconds"])
                 s["rss_kb"].append(result["max_rss_kb"])
+                per_mb = None
                 if result["input_bytes"] >= 256 * 1024:
-                    s["rss_per_mb"].append(result["max_rss_kb"] / 1024 / (result["input_bytes"] / 1048576))
+                    per_mb = result["max_rss_kb"] / 1024 / (result["input_bytes"] / 1048576)
+                    s["rss_per_mb"].append(per_mb)
+                # The run behind each maximum, to replay it (--replay TOOL:INDEX).
+                for key, value in (("slowest", result["seconds"]), ("largest_rss", result["max_rss_kb"]), ("largest_rss_per_mb", per_mb)):
+                    if value is not None and value > s["extremes"].get(key, {}).get("value", -1):
+                        s["extremes"][key] = {"value": round(value, 2), "index": index, "input_bytes": result["input_bytes"]}
                 if bad:
                     print(f"  {tool} run {index}: {result['class']} exit={result['exit']} signal={result['signal']} "
                           f"{result['problems']} {result['stderr_tail'][-160:]!r}", flush=True)
@@ -583,7 +600,7 @@ def main():
         row = {"runs": s["runs"], "exit": dict(s["exit"]), "class": dict(s["class"]), "problems": s["problems"],
                "slowest_s": round(max(s["seconds"], default=0), 2), "peak_rss_mb": round(max(s["rss_kb"], default=0) / 1024, 1),
                "rss_per_input_mb_median": round(statistics.median(per_mb), 1) if per_mb else None,
-               "rss_per_input_mb_max": round(max(per_mb), 1) if per_mb else None}
+               "rss_per_input_mb_max": round(max(per_mb), 1) if per_mb else None, "extremes": s["extremes"]}
         summary["tools"][tool] = row
         print(f"| {tool} | {s['runs']:,} | {s['exit'][0]:,} / {s['exit'][1]:,} / {s['exit'][2]:,} | {s['class']['crash']} | "
               f"{s['class']['timeout']} | {s['class']['out-of-memory']} | {s['problems'] + s['class']['signal']} | "
