@@ -19,8 +19,7 @@
 namespace esi {
 
 // Elements in the XInclude namespace (the 2001 and 2003 URIs) at or below `top`, in document
-// order; an element with the conventional prefix xi: that no ancestor declares counts too. A
-// file that names neither the namespace nor an element ending in ':include' is not walked.
+// order. A text that does not name the namespace is not walked.
 [[nodiscard]] std::vector<pugi::xml_node> find_xinclude_elements(std::string_view text, const pugi::xml_node top);
 
 // What to say about one of them.
