@@ -11,11 +11,8 @@
 #include <vector>
 
 #include "bench_support.hpp"
-<<<<<<< HEAD
-#include "esi/io/read_file.hpp"
-=======
 #include "esi/import/import.hpp"
->>>>>>> main
+#include "esi/io/read_file.hpp"
 #include "esi/xml/reader.hpp"
 
 using esi::bench::best_of;

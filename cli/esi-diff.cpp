@@ -8,6 +8,7 @@
 
 #include "cli_common.hpp"
 #include "diagnostic_line.hpp"
+#include "out_of_memory.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/diff/diff.hpp"
 #include "esi/diff/report.hpp"
@@ -28,6 +29,7 @@ bool reaches(esi::Verdict verdict, const std::string& fail_on) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    esi::cli::exit_with_code_two_when_out_of_memory("esi-diff");
     CLI::App app{"esi-diff: compare two EtherCAT ESI files semantically and classify every change"};
     std::string old_path;
     std::string new_path;

@@ -12,12 +12,15 @@
 
 #include "cli_common.hpp"
 #include "diagnostic_line.hpp"
+#include "out_of_memory.hpp"
 #include "esi/codegen/generate.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/enforce/limits.hpp"
 #include "esi/import/import.hpp"
 #include "esi/io/atomic_write.hpp"
+#include "esi/io/leftovers.hpp"
+#include "esi/io/same_file.hpp"
 #include "esi/load/document.hpp"
 #include "esi/version.hpp"
 #include "esi/xml/reader.hpp"
@@ -38,6 +41,10 @@ void print(const esi::Diagnostics& diagnostics) {
 
 // --import ESI.xml -o SOURCE.yaml: an ESI file -> the YAML device source (docs/yaml-import.md).
 int import_esi(const std::string& esi_path, const std::string& output, const std::optional<esi::DeviceSelector>& device) {
+    if (const esi::Diagnostics same = esi::refuse_output_over_input(output, {esi_path}); same.has_errors()) {
+        print(same);
+        return exit_usage;
+    }
     esi::ReadResult read = esi::read_esi_file(esi_path);
     print(read.diagnostics);
     if (!read.document || read.diagnostics.has_errors()) return exit_usage;
@@ -63,6 +70,8 @@ std::optional<fs::path> executable_path(const char* argv0) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    esi::cli::exit_with_code_two_when_out_of_memory("esi-gen");
+    esi::install_leftover_cleanup();
     CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
     std::string source, output_dir, dump_model, device, prefix, import_path, config;
     std::vector<std::string> only, template_dirs;
@@ -156,7 +165,7 @@ int main(int argc, char** argv) {
     esi::codegen::GenerateResult generated = esi::codegen::generate_outputs(*loaded.document, options);
     print(generated.diagnostics);
     if (generated.diagnostics.has_errors()) return exit_failed;
-    const esi::Diagnostics written = esi::write_files_atomically(generated.files);
+    const esi::Diagnostics written = esi::write_output_set(output_dir, generated.files);
     print(written);
     return written.has_errors() ? exit_failed : exit_ok;
 }

@@ -13,6 +13,7 @@
 #include "esi/lint/lint.hpp"
 #include "esi/report/lint_output.hpp"
 #include "esi/version.hpp"
+#include "out_of_memory.hpp"
 
 namespace {
 
@@ -30,6 +31,7 @@ bool reaches(esi::Severity severity, const std::string& fail_on) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    esi::cli::exit_with_code_two_when_out_of_memory("esi-lint");
     CLI::App app{"esi-lint: check EtherCAT ESI files against ETG rules and vendor limits"};
     std::vector<std::string> paths;
     std::string format = "text";

@@ -14,6 +14,8 @@
 #include "cli_common.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/io/atomic_write.hpp"
+#include "esi/io/leftovers.hpp"
+#include "esi/io/same_file.hpp"
 #include "esi/load/document.hpp"
 #include "esi/sii/build.hpp"
 #include "esi/sii/check.hpp"
@@ -21,6 +23,7 @@
 #include "esi/sii/image_file.hpp"
 #include "esi/sii/render.hpp"
 #include "esi/version.hpp"
+#include "out_of_memory.hpp"
 
 namespace {
 
@@ -69,6 +72,10 @@ int run_build(const std::string& input, const std::string& output, const std::st
     }
     std::optional<esi::DeviceSelector> selector;
     if (!esi::cli::parse_device_option("esi-sii build", device_text, selector)) return exit_usage;
+    if (const esi::Diagnostics same = esi::refuse_output_over_input(output, {input}); same.has_errors()) {
+        print(stderr, esi::sii::render_diagnostics_text(same));
+        return exit_usage;
+    }
     const std::optional<esi::EsiDocument> document = load_document(input);
     if (!document) return exit_usage;
     const std::vector<const esi::Device*> all = esi::select_devices(*document, std::nullopt);
@@ -148,6 +155,8 @@ int run_check(const std::string& esi_path, const std::string& image_path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    esi::cli::exit_with_code_two_when_out_of_memory("esi-sii");
+    esi::install_leftover_cleanup();
     CLI::App app{"esi-sii: build, dump and check SII EEPROM images"};
     app.require_subcommand(1);
     esi::cli::add_version_flag(app, "esi-sii");

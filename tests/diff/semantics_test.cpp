@@ -2,6 +2,8 @@
 // elements whose order ETG gives no meaning must not show up, while the order that is the
 // process-image layout must.
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "diff_fixture.hpp"
@@ -229,6 +231,32 @@ TEST(DiffSemantics, EmptyContainerElementsAreReportedAsSpelling) {
     EXPECT_EQ(r.changes[0].kind, ChangeKind::spelling_changed);
     EXPECT_EQ(r.changes[0].change_class, esi::ChangeClass::cosmetic);
     EXPECT_EQ(r.changes[0].path, "EtherCATInfo/Modules");
+}
+
+}  // namespace
+
+namespace {
+
+// Two kept (unmodelled) elements that differ only by a repeated attribute: well-formed XML cannot
+// hold one, but a model built by a library user can, and the differ must still name the change
+// instead of reading past the end of the child list.
+TEST(DiffSemantics, UnmodelledElementsDifferingOnlyByARepeatedAttributeAreAChange) {
+    const std::string with = edit(diff_base, "<Info><Electrical>", "<Extra A=\"1\"/><Info><Electrical>");
+    const esi::EsiDocument old_document = esi::test::read_document(with);
+    esi::EsiDocument new_document = esi::test::read_document(with);
+    ASSERT_FALSE(new_document.infos.empty());
+    ASSERT_FALSE(new_document.infos[0].devices.empty());
+    esi::Extras& extras = new_document.infos[0].devices[0].extras;
+    auto extra = std::find_if(extras.elements.begin(), extras.elements.end(), [](const esi::XmlElement& e) { return e.name == "Extra"; });
+    ASSERT_NE(extra, extras.elements.end());
+    extra->attributes.push_back({"A", "1"});
+
+    const esi::DiffResult r = esi::diff_documents(old_document, new_document);
+    ASSERT_EQ(r.changes.size(), 1u) << esi::test::describe(r);
+    EXPECT_EQ(r.changes[0].kind, ChangeKind::extras_changed);
+    EXPECT_EQ(r.changes[0].path, "Extra@A") << esi::test::describe(r);
+    EXPECT_EQ(r.changes[0].old_value, std::nullopt);
+    EXPECT_EQ(r.changes[0].new_value, "1");
 }
 
 }  // namespace

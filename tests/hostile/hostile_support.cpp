@@ -1,6 +1,8 @@
 #include "hostile/hostile_support.hpp"
 
+#include <arpa/inet.h>
 #include <fcntl.h>
+#include <netinet/in.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -42,6 +44,10 @@ ChildResult run_child_here(const std::vector<std::string>& argv, const ChildOpti
         if (options.file_size_limit) {
             const rlimit limit{*options.file_size_limit, *options.file_size_limit};
             setrlimit(RLIMIT_FSIZE, &limit);
+        }
+        if (options.address_space_limit) {
+            const rlimit limit{*options.address_space_limit, *options.address_space_limit};
+            setrlimit(RLIMIT_AS, &limit);
         }
         signal(SIGXFSZ, options.ignore_sigxfsz ? SIG_IGN : SIG_DFL);
         execv(args[0], args.data());
@@ -163,6 +169,7 @@ std::string encode_request(const std::vector<std::string>& argv, const ChildOpti
     put_number(out, static_cast<std::int64_t>(argv.size()));
     for (const auto& a : argv) put_text(out, a);
     put_number(out, options.file_size_limit ? static_cast<std::int64_t>(*options.file_size_limit) : -1);
+    put_number(out, options.address_space_limit ? static_cast<std::int64_t>(*options.address_space_limit) : -1);
     put_number(out, options.ignore_sigxfsz ? 1 : 0);
     put_number(out, options.kill_after ? options.kill_after->count() : -1);
     put_text(out, options.stdin_data);
@@ -171,14 +178,16 @@ std::string encode_request(const std::vector<std::string>& argv, const ChildOpti
 }
 
 bool decode_request(int fd, std::vector<std::string>& argv, ChildOptions& options) {
-    std::int64_t count = 0, limit = 0, ignore = 0, kill_after = 0;
+    std::int64_t count = 0, limit = 0, address_space = 0, ignore = 0, kill_after = 0;
     if (!get_number(fd, count)) return false;
     argv.assign(static_cast<std::size_t>(count), {});
     for (auto& a : argv)
         if (!get_text(fd, a)) return false;
-    if (!get_number(fd, limit) || !get_number(fd, ignore) || !get_number(fd, kill_after)) return false;
+    if (!get_number(fd, limit) || !get_number(fd, address_space) || !get_number(fd, ignore) || !get_number(fd, kill_after))
+        return false;
     if (!get_text(fd, options.stdin_data) || !get_text(fd, options.stdin_file)) return false;
     if (limit >= 0) options.file_size_limit = static_cast<std::uint64_t>(limit);
+    if (address_space >= 0) options.address_space_limit = static_cast<std::uint64_t>(address_space);
     options.ignore_sigxfsz = ignore != 0;
     if (kill_after >= 0) options.kill_after = std::chrono::microseconds(kill_after);
     return true;
@@ -297,6 +306,26 @@ std::uint32_t line_of(const std::string& text, const std::string& needle) {
     for (std::size_t i = 0; i < at; ++i)
         if (text[i] == '\n') ++line;
     return line;
+}
+
+Listener::Listener() {
+    fd_ = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    if (fd_ < 0 || bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || listen(fd_, 8) != 0 ||
+        getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length) != 0)
+        ADD_FAILURE() << "cannot listen on 127.0.0.1";
+    port_ = ntohs(address.sin_port);
+}
+
+Listener::~Listener() { close(fd_); }
+
+bool Listener::anyone_connected() const {
+    const int client = accept(fd_, nullptr, nullptr);
+    if (client >= 0) close(client);
+    return client >= 0;
 }
 
 }  // namespace esi::test

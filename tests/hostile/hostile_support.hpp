@@ -16,6 +16,7 @@ namespace esi::test {
 
 struct ChildOptions {
     std::optional<std::uint64_t> file_size_limit;  // RLIMIT_FSIZE in bytes
+    std::optional<std::uint64_t> address_space_limit;  // RLIMIT_AS in bytes
     bool ignore_sigxfsz = false;                    // write() then fails with EFBIG instead of a kill
     std::optional<std::chrono::microseconds> kill_after;  // SIGKILL the child after this long
     std::string stdin_data;
@@ -48,6 +49,22 @@ std::string sample_esi();
 
 // Replaces the first occurrence of `from` in `text`; the test fails when it is absent.
 std::string replace_once(std::string text, const std::string& from, const std::string& to);
+
+// A TCP listener on 127.0.0.1 that records whether anything connected (tests that prove no
+// network access: a URL pointing at it must never be fetched).
+class Listener {
+public:
+    Listener();
+    ~Listener();
+    Listener(const Listener&) = delete;
+    Listener& operator=(const Listener&) = delete;
+    [[nodiscard]] int port() const { return port_; }
+    [[nodiscard]] bool anyone_connected() const;
+
+private:
+    int fd_ = -1;
+    int port_ = 0;
+};
 
 // 1-based line number of the first occurrence of `needle` in `text` (0 when absent).
 std::uint32_t line_of(const std::string& text, const std::string& needle);

@@ -299,6 +299,16 @@ TEST(YamlBadInput, EscapeHatchXmlMustBeWellFormed) {
     expect_error(s, "yaml-xml", 9, 23, "not well-formed XML");
 }
 
+// What pugixml lets through is refused too: it would be copied into the generated ESI file.
+TEST(YamlBadInput, EscapeHatchXmlMeetsXmlOneDotZero) {
+    const DeviceSource repeated = load_yaml(header + "    xml: { elements: [\"<Info A='1' A='1'/>\"] }\n");
+    expect_error(repeated, "yaml-xml", 9, 23, "at character 13: attribute 'A' is given twice");
+    const DeviceSource entity = load_yaml(header + "    xml: { elements: [\"<Info>&nbsp;</Info>\"] }\n");
+    expect_error(entity, "yaml-xml", 9, 23, "undefined entity '&nbsp;'");
+    const DeviceSource control = load_yaml(header + "    xml: { elements: [\"<Info>\\x01</Info>\"] }\n");
+    expect_error(control, "yaml-xml", 9, 23, "U+0001");
+}
+
 TEST(YamlBadInput, PdoEntryDataTypeContradictingTheObject) {
     const DeviceSource s = load_yaml(header + R"(    objects:
       0x6000: { name: In, type: INT, access: ro, pdo: tx }

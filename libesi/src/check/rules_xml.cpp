@@ -130,6 +130,20 @@ constexpr Rule xml_doctype{
     .good_example = "<?xml version=\"1.0\" encoding=\"UTF-8\"?> (no DOCTYPE)",
 };
 
+constexpr Rule xml_xinclude{
+    .id = "xml-xinclude",
+    .default_severity = Severity::error,
+    .summary = "An XInclude element, which ESI does not know",
+    .rationale =
+        "ETG.2000 defines no inclusion mechanism: masters and configuration tools read xi:include as an unknown "
+        "element, not as the content it names (W3C XML Inclusions is an optional layer above XML 1.0). esi-lint "
+        "does not resolve it (that would read or fetch other files), and esi-gen would copy the element into "
+        "generated ESI and YAML with an href that no longer points anywhere, so the file is refused until the "
+        "include is expanded (xmllint --xinclude).",
+    .bad_example = "<Dictionary><xi:include xmlns:xi=\"http://www.w3.org/2001/XInclude\" href=\"objects.xml\"/></Dictionary>",
+    .good_example = "<Dictionary><Objects>…</Objects></Dictionary>",
+};
+
 constexpr Rule xml_schema{
     .id = "xml-schema",
     .default_severity = Severity::error,
@@ -167,6 +181,7 @@ void add_xml(std::vector<Rule>& out) {
         xml_unknown_root,
         xml_nesting_depth,
         xml_doctype,
+        xml_xinclude,
         xml_schema,
         lint_directive,
     });

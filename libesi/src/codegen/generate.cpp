@@ -6,6 +6,7 @@
 #include "codegen/document_view.hpp"
 #include "codegen/mustache.hpp"
 #include "esi/codegen/template_lookup.hpp"
+#include "esi/io/same_file.hpp"
 #include "esi/text_distance.hpp"
 #include "esi/io/read_file.hpp"
 
@@ -92,13 +93,18 @@ Plan make_plan(const EsiDocument& document, const GenerateOptions& options, Diag
                 plan.add({dir / expand(artifact.file_name, stem), kind->name, artifact.template_name}, &device, &artifact);
         }
     }
-    // Writing over the source would destroy the input of the next run.
-    std::error_code ec;
-    for (const auto& file : plan.files) {
-        if (!document.path.empty() && fs::exists(file.path, ec) && fs::equivalent(file.path, document.path, ec)) {
+    // Writing over the source would destroy the input of the next run; so would an output
+    // directory that is the source file itself (nothing could be written into it anyway).
+    if (!document.path.empty()) {
+        if (same_file(options.output_dir, document.path))
             diagnostics.emplace(Severity::error, "codegen-overwrites-source",
-                                "output " + file.path.string() + " is the source file itself; choose another output directory",
+                                "the output directory " + options.output_dir.string() + " is the source file; choose another output directory",
                                 document.path, {});
+        for (const auto& file : plan.files) {
+            if (same_file(file.path, document.path))
+                diagnostics.emplace(Severity::error, "codegen-overwrites-source",
+                                    "output " + file.path.string() + " is the source file itself; choose another output directory",
+                                    document.path, {});
         }
     }
     return plan;

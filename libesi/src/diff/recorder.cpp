@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <set>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -156,18 +158,35 @@ struct Difference {
     std::optional<std::string> new_value;
 };
 
-Difference first_difference(const XmlElement& a, const XmlElement& b, std::string path) {
-    std::map<std::string, std::string> aa;
-    std::map<std::string, std::string> ba;
-    for (const auto& x : a.attributes) aa[x.name] = x.value;
-    for (const auto& x : b.attributes) ba[x.name] = x.value;
-    for (const auto& [name, value] : aa) {
-        auto it = ba.find(name);
-        if (it == ba.end()) return {attr(path, name), value, std::nullopt};
-        if (it->second != value) return {attr(path, name), value, it->second};
+// The first attribute whose values differ, by name; a name may repeat in a model built in
+// memory (well-formed XML cannot hold one), so the values of a name are compared as a list.
+std::optional<Difference> first_attribute_difference(const XmlElement& a, const XmlElement& b, const std::string& path) {
+    std::map<std::string_view, std::vector<std::string_view>> aa;
+    std::map<std::string_view, std::vector<std::string_view>> ba;
+    for (const auto& x : a.attributes) aa[x.name].push_back(x.value);
+    for (const auto& x : b.attributes) ba[x.name].push_back(x.value);
+    auto value = [](const std::vector<std::string_view>& values, std::size_t i) {
+        return i < values.size() ? std::optional<std::string>(values[i]) : std::nullopt;
+    };
+    std::set<std::string_view> names;
+    for (const auto& [name, values] : aa) names.insert(name);
+    for (const auto& [name, values] : ba) names.insert(name);
+    static const std::vector<std::string_view> none;
+    for (const std::string_view name : names) {
+        const auto ia = aa.find(name);
+        const auto ib = ba.find(name);
+        const auto& va = ia == aa.end() ? none : ia->second;
+        const auto& vb = ib == ba.end() ? none : ib->second;
+        for (std::size_t i = 0; i < std::max(va.size(), vb.size()); ++i)
+            if (value(va, i) != value(vb, i)) return Difference{attr(path, name), value(va, i), value(vb, i)};
     }
-    for (const auto& [name, value] : ba)
-        if (!aa.count(name)) return {attr(path, name), std::nullopt, value};
+    return std::nullopt;
+}
+
+// Only called for elements that differ (same_element is false), so a difference exists; the
+// whole element is named if none of the parts below is found to differ.
+Difference first_difference(const XmlElement& a, const XmlElement& b, std::string path) {
+    if (auto d = first_attribute_difference(a, b, path)) return std::move(*d);
     if (trim(a.text) != trim(b.text)) return {path, std::string(trim(a.text)), std::string(trim(b.text))};
     const std::size_t n = std::min(a.children.size(), b.children.size());
     for (std::size_t i = 0; i < n; ++i) {
@@ -177,7 +196,8 @@ Difference first_difference(const XmlElement& a, const XmlElement& b, std::strin
         return first_difference(a.children[i], b.children[i], child(path, a.children[i].name));
     }
     if (a.children.size() > n) return {child(path, a.children[n].name), describe(a.children[n]), std::nullopt};
-    return {child(path, b.children[n].name), std::nullopt, describe(b.children[n])};
+    if (b.children.size() > n) return {child(path, b.children[n].name), std::nullopt, describe(b.children[n])};
+    return {path, describe(a), describe(b)};
 }
 
 // Texts shown to users compare with whitespace runs collapsed: a name wrapped over two lines in

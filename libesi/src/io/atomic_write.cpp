@@ -6,12 +6,21 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <random>
 #include <set>
+
+#include "io/created_directories.hpp"
+#include "io/directory_lock.hpp"
+#include "io/leftover_registry.hpp"
 
 namespace esi {
 
 namespace {
+
+using io_detail::CreatedDirectories;
+using io_detail::LeftoverKind;
+using io_detail::LeftoverRegistration;
 
 std::string error_text() { return std::strerror(errno); }
 
@@ -26,6 +35,7 @@ std::filesystem::path directory_of(const std::filesystem::path& target) {
 struct Staged {
     int fd = -1;                    // open unnamed file (O_TMPFILE), or -1
     std::filesystem::path named;    // named temporary file, or empty
+    LeftoverRegistration leftover;  // the named file, removed if the run is interrupted
 };
 
 bool write_all(int fd, const std::string& content, std::string& error) {
@@ -56,7 +66,12 @@ std::filesystem::path temporary_name(const std::filesystem::path& target) {
 bool stage_named(const std::filesystem::path& target, const std::string& content, Staged& staged, std::string& error) {
     for (int attempt = 0; attempt < 16; ++attempt) {
         const std::filesystem::path temporary = temporary_name(target);
-        const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+        int fd = -1;
+        {
+            const io_detail::DeferredSignals deferred;  // created and registered as one step
+            fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+            if (fd >= 0) staged.leftover = LeftoverRegistration(temporary, LeftoverKind::file);
+        }
         if (fd < 0) {
             if (errno == EEXIST) continue;
             error = error_text();
@@ -66,6 +81,7 @@ bool stage_named(const std::filesystem::path& target, const std::string& content
         if (::close(fd) != 0 && written) error = error_text();
         if (!written || !error.empty()) {
             ::unlink(temporary.c_str());
+            staged.leftover.release();
             return false;
         }
         staged.named = temporary;
@@ -98,7 +114,9 @@ bool stage(const std::filesystem::path& target, const std::string& content, Stag
 void discard(Staged& staged) {
     if (staged.fd >= 0) ::close(staged.fd);
     if (!staged.named.empty()) ::unlink(staged.named.c_str());
-    staged = {};
+    staged.leftover.release();
+    staged.fd = -1;
+    staged.named.clear();
 }
 
 // Gives an unnamed file its temporary name (through /proc/self/fd, which needs no privilege,
@@ -108,8 +126,13 @@ bool commit(const std::filesystem::path& target, Staged& staged, std::string& er
         const std::string fd_path = "/proc/self/fd/" + std::to_string(staged.fd);
         for (int attempt = 0; attempt < 16 && staged.named.empty(); ++attempt) {
             const std::filesystem::path temporary = temporary_name(target);
-            if (::linkat(AT_FDCWD, fd_path.c_str(), AT_FDCWD, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) staged.named = temporary;
-            else if (errno != EEXIST) break;
+            const io_detail::DeferredSignals deferred;  // named and registered as one step
+            if (::linkat(AT_FDCWD, fd_path.c_str(), AT_FDCWD, temporary.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+                staged.named = temporary;
+                staged.leftover = LeftoverRegistration(temporary, LeftoverKind::file);
+            } else if (errno != EEXIST) {
+                break;
+            }
         }
         if (staged.named.empty()) {
             error = "cannot name the temporary file: " + error_text();
@@ -118,11 +141,13 @@ bool commit(const std::filesystem::path& target, Staged& staged, std::string& er
         ::close(staged.fd);
         staged.fd = -1;
     }
+    const io_detail::DeferredSignals deferred;  // renamed and forgotten as one step
     if (std::rename(staged.named.c_str(), target.c_str()) != 0) {
         error = error_text();
         return false;
     }
     staged.named.clear();
+    staged.leftover.release();
     return true;
 }
 
@@ -131,8 +156,10 @@ bool commit(const std::filesystem::path& target, Staged& staged, std::string& er
 Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
     Diagnostics diagnostics;
     std::vector<Staged> staged(files.size());
+    CreatedDirectories created;  // removed again when the set cannot be written
     auto discard_all = [&] {
         for (auto& s : staged) discard(s);
+        created.remove();
     };
     for (std::size_t i = 0; i < files.size(); ++i) {
         const auto& file = files[i];
@@ -143,11 +170,7 @@ Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
             diagnostics.emplace(Severity::error, "io-error", "cannot write: is a directory", file.path.string(), {});
             break;
         }
-        if (file.path.has_parent_path()) std::filesystem::create_directories(file.path.parent_path(), ec);
-        if (ec) {
-            diagnostics.emplace(Severity::error, "io-error", "cannot create directory: " + ec.message(), file.path.parent_path().string(), {});
-            break;
-        }
+        if (file.path.has_parent_path() && !created.create(file.path.parent_path(), diagnostics)) break;
         std::string error;
         if (!stage(file.path, file.content, staged[i], error)) {
             diagnostics.emplace(Severity::error, "io-error", "cannot write: " + error, file.path.string(), {});
@@ -169,6 +192,7 @@ Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
         }
         directories.insert(directory_of(files[i].path));
     }
+    created.keep();
     // Make the renames durable too: a crash right after returning must not bring back old files.
     for (const auto& dir : directories) {
         const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -181,6 +205,24 @@ Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
 
 Diagnostics write_file_atomically(const std::filesystem::path& path, const std::string& content) {
     return write_files_atomically({OutputFile{path, content}});
+}
+
+Diagnostics write_output_set(const std::filesystem::path& root, const std::vector<OutputFile>& files) {
+    Diagnostics diagnostics;
+    CreatedDirectories created;
+    std::optional<io_detail::DirectoryLock> lock = io_detail::DirectoryLock::acquire(root, created, diagnostics);
+    if (!lock) {
+        created.remove();
+        return diagnostics;
+    }
+    diagnostics = write_files_atomically(files);
+    if (diagnostics.has_errors()) {
+        lock.reset();  // removes the lock file, so that a root this run created is empty again
+        created.remove();
+    } else {
+        created.keep();
+    }
+    return diagnostics;
 }
 
 }  // namespace esi

@@ -10,11 +10,14 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <new>
 #include <pugixml.hpp>
 #include <system_error>
 
 #include "esi/encoding.hpp"
 #include "xml/reader_context.hpp"
+#include "xml/well_formed.hpp"
+#include "xml/xinclude.hpp"
 
 namespace esi {
 
@@ -227,7 +230,29 @@ ReadResult read_esi(std::string_view bytes, std::string path, const ReadOptions&
     return read_esi_owned(std::string(bytes), std::move(path), options);
 }
 
+namespace {
+ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOptions& options);
+}  // namespace
+
+// Reading holds the text twice and pugixml's tree (64 bytes an element), up to ten times the
+// file for dense markup: a file near the input limit can exhaust a machine's memory. That is an
+// unreadable input (io-error), never an abort.
 ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOptions& options) {
+    const std::size_t size = bytes_in.size();
+    try {
+        return read_unguarded(std::move(bytes_in), path, options);
+    } catch (const std::bad_alloc&) {
+        ReadResult result;
+        result.diagnostics.emplace(Severity::error, "io-error",
+                                   "not enough memory to read this file (" + std::to_string(size >> 20) + " MiB of XML)", path,
+                                   SourcePos{});
+        return result;
+    }
+}
+
+namespace {
+
+ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOptions& options) {
     ReadResult result;
     DecodedText decoded = decode_xml_bytes_owned(std::move(bytes_in));
     auto source = std::make_shared<SourceText>(path, std::move(decoded.utf8));
@@ -258,11 +283,17 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     // No comments or processing instructions in the tree (for_children relies on it); text before
     // an element's first child is stored in the element itself. A DOCTYPE is kept as a node (pugixml
     // accepts one only before the root element, never inside it) so that it can be reported below.
-    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata | pugi::parse_doctype;
+    // parse_fragment keeps text after the root element as a node, for the well-formedness check.
+    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata | pugi::parse_doctype | pugi::parse_fragment;
     const pugi::xml_parse_result parsed = xml.load_buffer_inplace(buffer.data(), buffer.size(), parse_options, pugi::encoding_utf8);
     if (!parsed) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", describe_parse_error(parsed), path,
                                    error_position(*source, parsed));
+        return result;
+    }
+    if (const auto fault = find_well_formedness_fault(source->text(), decoded.encoding, xml, buffer.data())) {
+        result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: " + fault->message, path,
+                                   source->position_of(fault->offset));
         return result;
     }
     // A DOCTYPE has no place in an ESI file (the ETG schema defines the format) and is the
@@ -285,6 +316,7 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
         result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: no root element", path, SourcePos{1, 1});
         return result;
     }
+    report_xinclude(*source, xml, buffer.data(), result.diagnostics);
     Reader reader(*source, buffer, result.diagnostics, options);
     EsiDocument doc = reader.read_document(root);
     doc.path = path;
@@ -293,6 +325,8 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     result.document = std::move(doc);
     return result;
 }
+
+}  // namespace
 
 ReadResult read_esi_file(const std::filesystem::path& path, const ReadOptions& options) {
     std::string error;

@@ -2,6 +2,9 @@
 
 #include <pugixml.hpp>
 
+#include "xml/well_formed.hpp"
+#include "xml/xinclude.hpp"
+
 namespace esi::yaml {
 
 namespace {
@@ -37,6 +40,20 @@ void read_element(Reader& reader, const Node& text_node, const std::string& afte
                      "'" + std::string(what) + "' is not well-formed XML at character " + std::to_string(parsed.offset + 1) +
                          ": " + parsed.description());
         return;
+    }
+    // What pugixml tolerates (a repeated attribute, '<' in a value, ...) would be written into
+    // the generated ESI file as it is.
+    if (const auto fault = find_content_fault(*text)) {
+        reader.error(text_node, "yaml-xml",
+                     "'" + std::string(what) + "' is not well-formed XML at character " + std::to_string(fault->offset + 1) + ": " +
+                         fault->message);
+        return;
+    }
+    for (const pugi::xml_node top : doc.children()) {
+        for (const pugi::xml_node element : find_xinclude_elements(*text, top)) {
+            reader.error(text_node, "yaml-xml", "'" + std::string(what) + "' holds " + describe_xinclude(element));
+            return;
+        }
     }
     std::string previous = after;
     bool any = false;

@@ -16,9 +16,17 @@ struct OutputFile {
     std::string content;
 };
 
-// Writes all files or none. Creates missing parent directories. Errors come back as io-error
-// diagnostics; on error no target has been replaced.
+// Writes all files or none. Creates missing parent directories (and removes them again when the
+// set cannot be written). Errors come back as io-error diagnostics; on error no target has been
+// replaced. While a temporary file has a name it is registered as a leftover
+// (esi/io/leftovers.hpp), so an interrupted run can remove it.
 [[nodiscard]] Diagnostics write_files_atomically(const std::vector<OutputFile>& files);
+
+// The same for one run's set of outputs under `root` (a tool's -o directory): the set is written
+// under an exclusive lock on `root` (a lock file inside it), so two runs into one directory take
+// turns and the files both write all come from one of them; a failed run also removes `root`
+// when it created it.
+[[nodiscard]] Diagnostics write_output_set(const std::filesystem::path& root, const std::vector<OutputFile>& files);
 
 [[nodiscard]] Diagnostics write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
