@@ -1,0 +1,18 @@
+# Compile-time measures shared by every build tree (docs/reliability.md, "CI", has the figures).
+
+# Every tree compiles through ccache when it is installed and ESI_CCACHE is on, unless a launcher
+# was given (-DCMAKE_CXX_COMPILER_LAUNCHER=...). A warm cache makes a CI re-run or a second tree of
+# the same checkout mostly cache hits; a cold run only pays ccache's small bookkeeping. Call it
+# before any target is defined: targets take their launcher from these variables when created.
+macro(esi_use_ccache)
+    if(ESI_CCACHE)
+        find_program(ESI_CCACHE_PROGRAM ccache)
+        if(ESI_CCACHE_PROGRAM)
+            foreach(lang C CXX)
+                if(NOT CMAKE_${lang}_COMPILER_LAUNCHER)
+                    set(CMAKE_${lang}_COMPILER_LAUNCHER "${ESI_CCACHE_PROGRAM}")
+                endif()
+            endforeach()
+        endif()
+    endif()
+endmacro()
