@@ -4,19 +4,22 @@
 # build-fuzz/findings/<target>/ as reproducers (those of an earlier run move to .../previous/);
 # the full libFuzzer log is build-fuzz/logs/<target>.log. Exit status 1 when any target left a
 # reproducer or failed. docs/reliability.md describes the targets and the figures of a long run.
-#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
+#   scripts/fuzz.sh [-j JOBS] [SECONDS_PER_TARGET] [TARGET...]
+# -j runs up to JOBS targets at once (default 1), each for the full time: on a machine with JOBS
+# idle cores every target gets what it gets alone, in 1/JOBS of the wall time.
 set -eu
 cd "$(dirname "$0")/.."
+jobs=1
+if [ "${1:-}" = "-j" ]; then
+    jobs=$2
+    shift 2
+fi
 seconds=${1:-60}
 [ $# -gt 0 ] && shift
-launcher=""
-command -v ccache >/dev/null 2>&1 && launcher="-DCMAKE_CXX_COMPILER_LAUNCHER=ccache"
-# -O1 with line tables and assertions on: the usual fuzzing build (fast to compile, asserts and
-# sanitizers catch what they can, stack traces name the line).
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=Fuzz -DCMAKE_CXX_FLAGS_FUZZ="-O1 -gline-tables-only" \
-    -DCMAKE_C_FLAGS_FUZZ="-O1 -gline-tables-only" -DESI_BUILD_FUZZERS=ON \
-    -DESI_BUILD_TESTS=OFF -DESI_BUILD_BENCH=OFF $launcher >/dev/null
-# Only the fuzz targets (and the library under them), not the instrumented command-line tools.
+# build-fuzz/ is the tree of CMakePresets.json's "fuzz" preset (clang, -O1 with line tables and
+# assertions on, everything under ASan + UBSan); CI builds its test suite too. Only the fuzz
+# targets (and the library under them) are built here.
+cmake --preset fuzz >/dev/null
 targets=${*:-$(cd fuzz && ls *_fuzzer.cpp | sed 's/\.cpp$//')}
 # shellcheck disable=SC2086
 cmake --build build-fuzz --target $targets
@@ -39,15 +42,12 @@ PollenRobotics__NeckOrbita3d_fw1.0__poulpe.xml PollenRobotics__NeckOrbita3d_fw1.
 Synapticon__Somanet_CiA402-single__siitool__2013.xml Synapticon__Somanet_CiA402-single__siitool__2016.xml
 PAIRS
 fi
-status=0
-for target in $targets; do
+# Runs one target (in the background when -j > 1); its exit status goes to <log>.status.
+run_target() {
+    target=$1
     work=build-fuzz/corpus/$target
     findings=build-fuzz/findings/$target
     log=build-fuzz/logs/$target.log
-    mkdir -p "$work" "$findings/previous"
-    for old in "$findings"/crash-* "$findings"/timeout-* "$findings"/oom-* "$findings"/leak-*; do
-        [ -e "$old" ] && mv "$old" "$findings/previous/"
-    done
     seeds=""
     dict=fuzz/esi.dict
     case $target in
@@ -58,17 +58,27 @@ for target in $targets; do
     esac
     existing=""
     for s in $seeds; do [ -e "$s" ] && existing="$existing $s"; done
-    echo "== $target: $seconds s (log: $log)"
     # -rss_limit_mb bounds memory per input (docs/reliability.md states the library's own
     # bounds, far below it); -timeout flags any input that takes longer than 10 s.
     rc=0
+    # shellcheck disable=SC2086
     build-fuzz/fuzz/"$target" "$work" $existing -dict="$dict" -max_total_time="$seconds" \
         -rss_limit_mb=2048 -timeout=10 -max_len=1048576 -artifact_prefix="$findings/" -print_final_stats=1 \
         >"$log" 2>&1 || rc=$?
-    # The last progress line (executions, cov, ft, corpus) and the final statistics.
+    echo "$rc" >"$log.status"
+}
+
+# Prints a finished target's last progress line (executions, cov, ft, corpus) and final
+# statistics; sets status=1 when it failed or left a reproducer.
+report_target() {
+    target=$1
+    findings=build-fuzz/findings/$target
+    log=build-fuzz/logs/$target.log
+    rc=$(cat "$log.status" 2>/dev/null || echo "no status")
+    echo "== $target: $seconds s (log: $log)"
     grep -E '^#[0-9]+' "$log" | tail -n 1 || true
     grep -E '^stat::' "$log" || true
-    if [ "$rc" -ne 0 ]; then
+    if [ "$rc" != 0 ]; then
         echo "!! $target exited with status $rc:"
         grep -E 'ERROR|SUMMARY|==[0-9]+==' "$log" | head -n 20 || true
         status=1
@@ -78,5 +88,30 @@ for target in $targets; do
         ls "$findings"/crash-* "$findings"/timeout-* "$findings"/oom-* "$findings"/leak-* 2>/dev/null || true
         status=1
     fi
+}
+
+status=0
+batch=""
+count=0
+for target in $targets; do
+    findings=build-fuzz/findings/$target
+    mkdir -p "build-fuzz/corpus/$target" "$findings/previous"
+    for old in "$findings"/crash-* "$findings"/timeout-* "$findings"/oom-* "$findings"/leak-*; do
+        [ -e "$old" ] && mv "$old" "$findings/previous/"
+    done
+    rm -f "build-fuzz/logs/$target.log.status"
+    echo "-- $target: fuzzing for $seconds s"
+    run_target "$target" &
+    batch="$batch $target"
+    count=$((count + 1))
+    # Every target runs for the same time, so batches of JOBS keep the cores busy.
+    if [ "$count" -ge "$jobs" ]; then
+        wait
+        for t in $batch; do report_target "$t"; done
+        batch=""
+        count=0
+    fi
 done
+wait
+for t in $batch; do report_target "$t"; done
 exit $status

@@ -6,7 +6,7 @@ set -eu
 packages="build-essential cmake ninja-build pkgconf git
 libpugixml-dev libcli11-dev libfmt-dev nlohmann-json3-dev libyaml-dev
 libgtest-dev libgmock-dev libbenchmark-dev libkainjow-mustache-dev libxml2-dev libxml2-utils
-clang libclang-rt-14-dev"
+clang libclang-rt-14-dev ccache"
 
 missing=""
 for p in $packages; do
