@@ -104,7 +104,7 @@ std::optional<ValueType> value_type_of(const SdoSpec& sdo, const ObjectEntry* en
 constexpr std::string_view coe_transitions[] = {"IP", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "PI"};
 
 void network_sdos(SlaveContext& c, std::vector<CoeCommand>& out) {
-    const Dictionary* dictionary = c.device.dictionary();
+    const bool any_dictionary = has_dictionary(c);
     const bool device_ca = c.slave.mailbox && c.slave.mailbox->complete_access;
     for (const SdoSpec& sdo : c.spec.sdos) {
         const std::string where = fmt::format("{}:{:02X}", hex_index(sdo.index), sdo.subindex);
@@ -123,10 +123,12 @@ void network_sdos(SlaveContext& c, std::vector<CoeCommand>& out) {
             c.error(sdo.pos, "net-sdo-complete-access", c.device.type.text + " does not support CoE complete access (CoE@CompleteAccess)");
             ok = false;
         }
-        const Object* object = dictionary ? dictionary->find_object(sdo.index) : nullptr;
+        const FoundObject found = find_object(c, sdo.index);
+        const Dictionary* dictionary = found.dictionary;
+        const Object* object = found.object;
         const ObjectLayout layout = object ? layout_of(dictionary, *object) : ObjectLayout{};
         const ObjectEntry* entry = object ? layout.entry(sdo.subindex) : nullptr;
-        if (dictionary && !object) {
+        if (any_dictionary && !object) {
             const bool typed = sdo.type || sdo.data;
             Diagnostic& d = typed ? c.warning(sdo.pos, "net-sdo-object", where + " is not in the object dictionary of " + c.device.type.text)
                                   : c.error(sdo.pos, "net-sdo-object",

@@ -156,6 +156,25 @@ std::uint32_t slot_index(const SlaveContext& c, std::size_t module, std::uint32_
     return index + m.slot * increment;
 }
 
+FoundObject find_object(const SlaveContext& c, std::uint32_t index) {
+    if (const Dictionary* d = c.device.dictionary())
+        if (const Object* o = d->find_object(index)) return {d, o};
+    for (std::size_t i = 0; i < c.slave.modules.size(); ++i) {
+        const Module& m = *c.slave.modules[i].module;
+        if (!m.profile || !m.profile->dictionary) continue;
+        for (const Object& o : m.profile->dictionary->objects)
+            if (slot_index(c, i, o.index, o.index_depend_on_slot.value_or(false)) == index) return {&*m.profile->dictionary, &o};
+    }
+    return {};
+}
+
+bool has_dictionary(const SlaveContext& c) {
+    if (c.device.dictionary()) return true;
+    for (const ModuleInSlot& m : c.slave.modules)
+        if (m.module->profile && m.module->profile->dictionary) return true;
+    return false;
+}
+
 std::vector<AvailablePdo> available_pdos(const SlaveContext& c) {
     std::vector<AvailablePdo> out;
     for (const auto* list : {&c.device.rx_pdos, &c.device.tx_pdos})

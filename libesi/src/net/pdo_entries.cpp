@@ -39,7 +39,7 @@ std::string subindex_list(const ObjectLayout& layout) {
 }  // namespace
 
 void configure_pdo_entries(SlaveContext& c) {
-    const Dictionary* dictionary = c.device.dictionary();
+    const bool dictionary = has_dictionary(c);
     for (const PdoEntriesSpec& spec : c.spec.pdo_entries) {
         auto it = std::find_if(c.slave.pdos.begin(), c.slave.pdos.end(), [&](const ConfiguredPdo& p) { return p.index == spec.pdo; });
         if (it == c.slave.pdos.end()) {
@@ -88,13 +88,14 @@ void configure_pdo_entries(SlaveContext& c) {
                 entries.push_back(std::move(ce));
                 continue;
             }
-            const Object* object = dictionary->find_object(e.index);
+            const FoundObject found = find_object(c, e.index);
+            const Object* object = found.object;
             if (!object) {
                 c.error(e.pos, "net-entry-unknown", fmt::format("{} is not in the object dictionary of {}", hex_index(e.index), c.device.type.text));
                 ok = false;
                 continue;
             }
-            const ObjectLayout layout = layout_of(dictionary, *object);
+            const ObjectLayout layout = layout_of(found.dictionary, *object);
             const ObjectEntry* entry = layout.entry(e.subindex);
             if (!entry) {
                 c.error(e.pos, "net-entry-unknown",

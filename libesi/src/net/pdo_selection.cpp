@@ -68,10 +68,9 @@ std::optional<std::uint32_t> default_sm(const Device& device, PdoDirection direc
 }
 
 // An entry's type when the ESI leaves DataType out: the dictionary's, else one of its size.
-std::string entry_type(const Dictionary* dictionary, std::uint32_t index, std::uint32_t subindex, std::uint32_t bit_len) {
-    if (dictionary)
-        if (const Object* o = dictionary->find_object(index))
-            if (const ObjectEntry* e = layout_of(dictionary, *o).entry(subindex); e && !e->type.empty()) return e->type;
+std::string entry_type(const SlaveContext& c, std::uint32_t index, std::uint32_t subindex, std::uint32_t bit_len) {
+    if (const FoundObject found = find_object(c, index); found.object)
+        if (const ObjectEntry* e = layout_of(found.dictionary, *found.object).entry(subindex); e && !e->type.empty()) return e->type;
     switch (bit_len) {
         case 1: return "BOOL";
         case 8: return "USINT";
@@ -95,7 +94,6 @@ ConfiguredPdo configured(const SlaveContext& c, const AvailablePdo& a, std::uint
     // An Exclude that depends on the slot moves with the PDO's own index.
     for (const PdoExclude& e : a.pdo->excludes)
         p.excludes.push_back(e.index + (e.depend_on_slot.value_or(false) ? a.index - a.pdo->index : 0));
-    const Dictionary* dictionary = c.device.dictionary();
     for (const PdoEntry& e : a.pdo->entries) {
         ConfiguredEntry ce;
         const bool depend = e.index_depend_on_slot.value_or(false);
@@ -106,7 +104,7 @@ ConfiguredPdo configured(const SlaveContext& c, const AvailablePdo& a, std::uint
         ce.comment = e.comment;
         ce.index_depend_on_slot = depend;
         if (!e.is_padding())
-            ce.data_type = e.data_type && !e.data_type->empty() ? *e.data_type : entry_type(dictionary, ce.index, ce.subindex, ce.bit_len);
+            ce.data_type = e.data_type && !e.data_type->empty() ? *e.data_type : entry_type(c, ce.index, ce.subindex, ce.bit_len);
         p.entries.push_back(std::move(ce));
     }
     return p;

@@ -52,6 +52,16 @@ void configure_modules(SlaveContext& context);
 // The entry indices of a module's PDO entry or InitCmd after the slot's index increment.
 [[nodiscard]] std::uint32_t slot_index(const SlaveContext& context, std::size_t module, std::uint32_t index, bool depend_on_slot);
 
+// An object of the slave's dictionary: the device's, else one a module brings (its index
+// moved by the slot's index increment when it depends on the slot).
+struct FoundObject {
+    const Dictionary* dictionary = nullptr;
+    const Object* object = nullptr;
+};
+[[nodiscard]] FoundObject find_object(const SlaveContext& context, std::uint32_t index);
+// True when the slave has any object dictionary to check against.
+[[nodiscard]] bool has_dictionary(const SlaveContext& context);
+
 void select_pdos(SlaveContext& context);
 void configure_pdo_entries(SlaveContext& context);
 void setup_sync_managers(SlaveContext& context);
