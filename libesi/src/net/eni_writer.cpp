@@ -122,6 +122,7 @@ void process_data(XmlText& x, const Network& n, const NetworkSlave& s) {
         x.leaf("StartAddress", sm.start_address);
         x.leaf("ControlByte", sm.control_byte);
         x.leaf("Enable", sm.enable ? "1" : "0");
+        if (sm.is_virtual) x.leaf("Virtual", "1");
         for (std::size_t p : sm.pdos) x.leaf("Pdo", s.pdos[p].index);
         x.close();
     }

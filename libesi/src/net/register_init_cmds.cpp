@@ -219,9 +219,10 @@ std::vector<RegisterCommand> slave_init_cmds(const Network& network, const Netwo
     preop.timeout_ms = t.back_to_safeop;
 
     // Process-data SyncManagers and FMMUs.
+    // Virtual SMs (ESI Sm@Virtual) are no SyncManagers: only their FMMUs are written.
     std::vector<const SmSetup*> pd;
     for (const SmSetup& sm : s.sms)
-        if (sm.is_process_data()) pd.push_back(&sm);
+        if (sm.is_process_data() && !sm.is_virtual) pd.push_back(&sm);
     if (!pd.empty()) {
         const std::uint32_t first = pd.front()->number, last = pd.back()->number;
         b.add({"IP", "SP", "SI", "OP", "OI"}, "clear sms", fpwr, static_cast<std::uint16_t>(0x0800 + 8 * first), zeros(8 * (last - first + 1)))

@@ -52,6 +52,7 @@ void setup_sync_managers(SlaveContext& c) {
         sm.start_address = static_cast<std::uint16_t>(esi_sm.start_address.value_or(0));
         sm.control_byte = static_cast<std::uint8_t>(esi_sm.control_byte.value_or(0));
         sm.op_only = esi_sm.op_only.value_or(false);
+        sm.is_virtual = esi_sm.is_virtual.value_or(false);
         sm.min_size = esi_sm.min_size;
         sm.max_size = esi_sm.max_size;
         sm.default_size = esi_sm.default_size;

@@ -61,6 +61,7 @@ struct SmSetup {
     std::uint8_t control_byte = 0;
     bool enable = false;
     bool op_only = false;  // ESI Sm@OpOnly: enabled at SO, cleared at OS
+    bool is_virtual = false;  // ESI Sm@Virtual: no SyncManager; its FMMU maps ESC registers directly
     std::optional<std::uint32_t> min_size, max_size, default_size;  // ESI values, copied to the ENI
     std::vector<std::size_t> pdos;  // into NetworkSlave::pdos, in assignment order
     [[nodiscard]] bool is_process_data() const { return kind == SmKind::outputs || kind == SmKind::inputs; }
