@@ -77,6 +77,7 @@ void configure_modules(SlaveContext& c) {
     const std::vector<SlotPosition> positions = slot_positions(*c.device.slots);
     std::vector<const Module*> chosen(positions.size(), nullptr);
     std::vector<bool> given(positions.size(), false);
+    std::vector<bool> refused(positions.size(), false);  // reported already
     if (c.spec.modules) {
         std::size_t next = 0;
         for (const ModuleSpec& m : *c.spec.modules) {
@@ -114,6 +115,7 @@ void configure_modules(SlaveContext& c) {
                     if (candidate.type == *m.type) module = &candidate;
             }
             if (!module || !slot_accepts(slot, *module)) {
+                refused[at] = true;
                 const std::string what = m.ident ? hex_index(*m.ident) : "'" + m.type.value_or("") + "'";
                 c.error(m.pos, "net-module",
                         fmt::format("{} {} take module {}; it takes: {}", slot_label(positions[at], static_cast<std::uint32_t>(at)),
@@ -129,7 +131,7 @@ void configure_modules(SlaveContext& c) {
     for (std::size_t i = 0; i < positions.size(); ++i) {
         const SlotPosition& p = positions[i];
         if (!chosen[i]) {
-            if (p.instance < p.slot->min_instances)
+            if (p.instance < p.slot->min_instances && !refused[i])
                 c.error(c.spec.modules ? c.spec.modules_pos : c.spec.pos, "net-module",
                         fmt::format("{} needs a module (MinInstances {}); it takes: {}", slot_label(p, static_cast<std::uint32_t>(i)),
                                     p.slot->min_instances, accepted_list(c.info, *p.slot)));

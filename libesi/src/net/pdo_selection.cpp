@@ -216,10 +216,16 @@ void select_pdos(SlaveContext& c) {
     // Mandatory PDOs stay; PDOs that exclude each other do not go together.
     std::set<std::uint32_t> assigned;
     for (const Choice& ch : chosen) assigned.insert(ch.pdo->index);
+    std::string missing;
+    std::size_t missing_count = 0;
     for (const AvailablePdo& a : available)
-        if (a.pdo->mandatory.value_or(false) && !assigned.count(a.index))
-            c.error(selection_pos, "net-pdo-mandatory",
-                    fmt::format("{} {} is Mandatory in the ESI and must be assigned", a.pdo->element_name(), hex_index(a.index)));
+        if (a.pdo->mandatory.value_or(false) && !assigned.count(a.index)) {
+            missing += (missing.empty() ? "" : ", ") + hex_index(a.index);
+            ++missing_count;
+        }
+    if (missing_count)
+        c.error(selection_pos, "net-pdo-mandatory",
+                fmt::format("{} {} Mandatory in the ESI and must be assigned", missing, missing_count == 1 ? "is" : "are"));
     std::set<std::pair<std::uint32_t, std::uint32_t>> reported;
     for (const Choice& ch : chosen) {
         const ConfiguredPdo p = configured(c, *ch.pdo, ch.sm);
