@@ -1,0 +1,156 @@
+// esi-net: master-side configuration from ESI files (docs/esi-net.md).
+//   esi-net build NETWORK.yaml -o OUTDIR [--only eni,igh,lcec,map] [--esi PATH...]
+//   esi-net init --from-igh SLAVES.txt [--esi PATH...] -o NETWORK.yaml
+//   esi-net find [--esi PATH...] VENDOR:PRODUCT[:REVISION] | NAME
+// Exit codes: 0 done; 1 the network has errors (an unknown device, a PDO selection the ESI
+// forbids …) or nothing was found or written; 2 usage error or an unreadable or invalid input
+// file. Nothing is written on error.
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <fmt/format.h>
+#include <iostream>
+
+#include "cli_common.hpp"
+#include "diagnostic_line.hpp"
+#include "esi/io/atomic_write.hpp"
+#include "esi/io/read_file.hpp"
+#include "esi/net/igh_scan.hpp"
+#include "esi/net/library_index.hpp"
+#include "esi/net/network.hpp"
+#include "esi/net/outputs.hpp"
+#include "esi/net/resolve.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using esi::cli::exit_findings;
+using esi::cli::exit_ok;
+using esi::cli::exit_usage;
+
+void print(const esi::Diagnostics& diagnostics) {
+    esi::Diagnostics sorted = diagnostics;
+    sorted.sort();
+    for (const auto& d : sorted) print_diagnostic(d, "esi-net");
+}
+
+esi::net::IndexOptions index_options(bool no_cache) {
+    esi::net::IndexOptions options;
+    if (!no_cache) options.cache_dir = esi::net::default_cache_dir();
+    return options;
+}
+
+std::vector<fs::path> paths(const std::vector<std::string>& texts) { return {texts.begin(), texts.end()}; }
+
+int run_build(const std::string& network_path, const std::string& output_dir, const std::string& only,
+              const std::vector<std::string>& esi, bool no_cache) {
+    std::string error;
+    const auto kinds = only.empty() ? std::optional<std::vector<esi::net::OutputKind>>(std::vector<esi::net::OutputKind>(
+                                          esi::net::all_output_kinds().begin(), esi::net::all_output_kinds().end()))
+                                    : esi::net::parse_output_kinds(only, error);
+    if (!kinds) {
+        std::cerr << "esi-net build: --only: " << error << "\n";
+        return exit_usage;
+    }
+    const esi::net::NetworkFileResult read = esi::net::read_network_file(network_path);
+    print(read.diagnostics);
+    if (!read.spec) return exit_usage;
+    esi::net::BuildOptions options;
+    options.extra_esi = paths(esi);
+    options.index = index_options(no_cache);
+    const esi::net::BuildResult built = esi::net::build_network(*read.spec, options);
+    print(built.diagnostics);
+    if (!built.network) {
+        std::cerr << "esi-net build: " << network_path << ": nothing written\n";
+        return exit_findings;
+    }
+    const esi::Diagnostics written = esi::write_files_atomically(esi::net::network_outputs(*built.network, *kinds, output_dir));
+    print(written);
+    return written.has_errors() ? exit_findings : exit_ok;
+}
+
+int run_find(const std::string& query_text, const std::vector<std::string>& esi, bool no_cache) {
+    std::string error;
+    const auto query = esi::net::parse_find_query(query_text, error);
+    if (!query) {
+        std::cerr << "esi-net find: " << error << "\n";
+        return exit_usage;
+    }
+    if (esi.empty()) {
+        std::cerr << "esi-net find: give the ESI library with --esi PATH\n";
+        return exit_usage;
+    }
+    const esi::net::IndexResult indexed = esi::net::build_library_index(paths(esi), index_options(no_cache));
+    print(indexed.diagnostics);
+    if (indexed.diagnostics.has_errors()) return exit_usage;
+    const esi::net::FindResult found = esi::net::find_devices(indexed.index, *query);
+    print(found.diagnostics);
+    std::string out;
+    for (const esi::net::IndexedDevice* d : found.devices)
+        out += fmt::format("{}:{}:{}: {}{}\n", indexed.index.file_of(*d).path, d->line, d->column, esi::net::describe_identity(*d),
+                           d->name.empty() || d->name == d->type ? "" : " — " + d->name);
+    esi::cli::write_stdout(out);
+    return found.devices.empty() ? exit_findings : exit_ok;
+}
+
+int run_init(const std::string& scan_path, const std::string& output, const std::vector<std::string>& esi, bool no_cache) {
+    std::string error;
+    const std::optional<std::string> text = esi::read_file_bytes(scan_path, error);
+    if (!text) {
+        std::cerr << "esi-net init: " << scan_path << ": " << error << "\n";
+        return exit_usage;
+    }
+    const esi::net::IghScan scan = esi::net::parse_igh_slaves(*text, scan_path);
+    print(scan.diagnostics);
+    if (scan.diagnostics.has_errors()) return exit_usage;
+    std::optional<esi::net::LibraryIndex> index;
+    if (!esi.empty()) {
+        esi::net::IndexResult indexed = esi::net::build_library_index(paths(esi), index_options(no_cache));
+        print(indexed.diagnostics);
+        if (indexed.diagnostics.has_errors()) return exit_usage;
+        index = std::move(indexed.index);
+    }
+    esi::net::InitOptions options;
+    options.esi = esi;
+    const esi::net::InitResult init = esi::net::network_from_scan(scan, index ? &*index : nullptr, options);
+    print(init.diagnostics);
+    const esi::Diagnostics written = esi::write_file_atomically(output, init.yaml);
+    print(written);
+    return written.has_errors() ? exit_findings : exit_ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"esi-net: master configuration (ENI, IgH C, linuxcnc-ethercat, process-image map) from ESI files"};
+    app.require_subcommand(1);
+    esi::cli::add_version_flag(app, "esi-net");
+
+    std::string build_network_path, build_output, build_only;
+    std::vector<std::string> build_esi, find_esi, init_esi;
+    bool no_cache = false;
+    app.add_flag("--no-cache", no_cache, "do not read or write the ESI library index cache ($XDG_CACHE_HOME/libesi)");
+    CLI::App* build = app.add_subcommand("build", "write the master configuration of a network");
+    build->add_option("network", build_network_path, "NETWORK.yaml")->required();
+    build->add_option("-o,--output", build_output, "output directory (created when missing)")->required();
+    build->add_option("--only", build_only, "output kinds, comma-separated: eni, igh, lcec, map (default: all)");
+    build->add_option("--esi", build_esi, "more ESI files or folders to look in (repeatable)");
+
+    std::string scan_path, init_output;
+    CLI::App* init = app.add_subcommand("init", "write a NETWORK.yaml from a bus scan");
+    init->add_option("--from-igh", scan_path, "output of the IgH master's `ethercat slaves -v`")->required();
+    init->add_option("--esi", init_esi, "ESI files or folders to name the devices from (repeatable)");
+    init->add_option("-o,--output", init_output, "NETWORK.yaml to write")->required();
+
+    std::string query;
+    CLI::App* find = app.add_subcommand("find", "which ESI file describes a device");
+    find->add_option("device", query, "VENDOR:PRODUCT[:REVISION] or a device name (Type text)")->required();
+    find->add_option("--esi", find_esi, "ESI files or folders to look in (repeatable)");
+
+    if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
+    if (build->parsed()) return run_build(build_network_path, build_output, build_only, build_esi, no_cache);
+    if (init->parsed()) return run_init(scan_path, init_output, init_esi, no_cache);
+    if (find->parsed()) return run_find(query, find_esi, no_cache);
+    return exit_usage;
+}
