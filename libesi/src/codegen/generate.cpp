@@ -4,7 +4,7 @@
 #include <system_error>
 
 #include "codegen/document_view.hpp"
-#include "codegen/mustache.hpp"
+#include "esi/codegen/mustache.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/text_distance.hpp"
 #include "esi/io/read_file.hpp"

@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-#include "codegen/view_tree.hpp"
+#include "esi/codegen/view_tree.hpp"
 #include "esi/data_types.hpp"
 #include "esi/model/object_layout.hpp"
 
