@@ -9,21 +9,17 @@
 #include <cstdio>
 #include <set>
 
+#include "esi/model/language.hpp"
 #include "import/import_writer.hpp"
 
 namespace esi::import_detail {
 
 namespace {
 
-// The language codes the parser knows (yaml_reader.cpp); any other LcId is written as a number.
+// The language codes the YAML reader knows (esi/model/language.hpp); any other LcId is written as
+// a number.
 std::string language_key(std::uint32_t lcid) {
-    static const std::pair<std::uint32_t, const char*> codes[] = {
-        {1033, "en"}, {1031, "de"}, {1036, "fr"}, {1040, "it"}, {1034, "es"}, {1041, "ja"}, {2052, "zh"}, {1042, "ko"},
-        {1049, "ru"}, {1045, "pl"}, {1043, "nl"}, {1053, "sv"}, {1030, "da"}, {1035, "fi"}, {2070, "pt"}, {1029, "cs"},
-        {1055, "tr"}, {1038, "hu"}, {1044, "nb"}, {2057, "en-GB"}, {3079, "de-AT"}, {2055, "de-CH"}, {1028, "zh-TW"},
-        {1046, "pt-BR"}};
-    for (const auto& [id, code] : codes)
-        if (id == lcid) return code;
+    if (const auto code = language_code(lcid)) return std::string(*code);
     return std::to_string(lcid);
 }
 

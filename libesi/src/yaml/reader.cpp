@@ -1,10 +1,10 @@
 #include "esi/yaml/reader.hpp"
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <cmath>
 
+#include "esi/model/language.hpp"
 #include "esi/text_distance.hpp"
 
 namespace esi::yaml {
@@ -203,24 +203,6 @@ std::optional<HexData> Reader::hex(const Node& node, std::string_view what) {
     return out;
 }
 
-namespace {
-
-struct Language {
-    std::string_view code;
-    std::uint32_t lcid;
-};
-
-// Windows LCIDs of the languages ESI files use (ETG.2000 Name@LcId; 1033 is the schema default).
-constexpr std::array languages{
-    Language{"en", 1033}, Language{"de", 1031}, Language{"fr", 1036}, Language{"it", 1040}, Language{"es", 1034},
-    Language{"ja", 1041}, Language{"zh", 2052}, Language{"ko", 1042}, Language{"ru", 1049}, Language{"pl", 1045},
-    Language{"nl", 1043}, Language{"sv", 1053}, Language{"da", 1030}, Language{"fi", 1035}, Language{"pt", 2070},
-    Language{"cs", 1029}, Language{"tr", 1055}, Language{"hu", 1038}, Language{"nb", 1044}, Language{"en-GB", 2057},
-    Language{"de-AT", 3079}, Language{"de-CH", 2055}, Language{"zh-TW", 1028}, Language{"pt-BR", 1046},
-};
-
-}  // namespace
-
 Names Reader::names(const Node& node, std::string_view what) {
     Names out;
     if (node.IsNull()) return out;  // `name: null`: no Name element (an imported file without one)
@@ -245,11 +227,10 @@ Names Reader::names(const Node& node, std::string_view what) {
         t.pos = pos_of(value);
         const std::string code = key.Scalar();
         bool known = false;
-        for (const auto& l : languages)
-            if (l.code == code) {
-                t.lcid = l.lcid;
-                known = true;
-            }
+        if (const auto lcid = lcid_of_language(code)) {
+            t.lcid = *lcid;
+            known = true;
+        }
         if (!known) {
             const ParsedNumber n = parse_number(code);
             if (n.ok() && !n.value.negative && n.value.magnitude <= 0xFFFF) {
@@ -259,7 +240,7 @@ Names Reader::names(const Node& node, std::string_view what) {
         }
         if (!known) {
             std::vector<std::string_view> codes;
-            for (const auto& l : languages) codes.push_back(l.code);
+            for (const auto& l : languages()) codes.push_back(l.code);
             std::string message = "unknown language '" + code + "' in '" + std::string(what) + "' (use a code such as en or de, or a numeric LcId)";
             message += did_you_mean(code, codes);
             error(key, "yaml-unknown-key", message);
