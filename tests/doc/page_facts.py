@@ -13,8 +13,8 @@ For each page, at a 1280 px wide viewport:
   - every PDO table row (tr[data-entry]) by key, and per PDO section its rows and picture entries;
   - console messages and uncaught exceptions, and every request other than the page itself
     (requests are intercepted and failed, so nothing leaves the machine);
-  - a screenshot of the first viewport: its size, how many colours it has, and whether the
-    picture tints of the bit layouts appear in it (the SVGs were painted, not only laid out).
+  - a screenshot from the first picture with entries (else the top of the page): its size, how
+    many colours it has, and whether the pictures' tints appear in it (painted, not only laid out).
 """
 
 import argparse
@@ -66,7 +66,7 @@ FACTS_SCRIPT = r"""
   const pdos = [...document.querySelectorAll('section.pdo')].map(s => ({
     id: s.id, rows: s.querySelectorAll('tr[data-entry]').length,
     entries: [...s.querySelectorAll('svg.bit-layout g.entry')].length}));
-  const firstSvg = document.querySelector('svg.bit-layout');
+  const firstSvg = [...document.querySelectorAll('svg.bit-layout')].find(s => s.querySelector('g.entry'));
   return JSON.stringify({title: document.title, lang: root.lang, scroll_width: root.scrollWidth, client_width: viewport,
                          wide_elements: wide, svgs, entry_keys: keys, pdo_sections: pdos,
                          first_svg_top: firstSvg ? firstSvg.getBoundingClientRect().top + window.scrollY : null,
@@ -277,7 +277,7 @@ def page_facts(browser, path, screenshot_path):
     browser.wait_for("Page.loadEventFired")
     facts = json.loads(browser.page("Runtime.evaluate", {"expression": FACTS_SCRIPT, "returnByValue": True})["result"]["value"])
     facts["page"] = path
-    # The screenshot shows the first picture when there is one (else the top of the page), at a
+    # The screenshot shows the first picture with entries when there is one (else the top of the page), at a
     # quarter scale: the boxes are large enough that their inner pixels keep their exact tint.
     top = facts["first_svg_top"] or 0
     clip = {"x": 0, "y": max(0, top - 40), "width": VIEWPORT[0], "height": VIEWPORT[1], "scale": 0.25}
