@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <map>
 #include <regex>
 
@@ -199,6 +200,26 @@ TEST(Datasheet, DictionaryValuesAreShownAsTheirTypeReadsThem) {
     // 0xF000:01 Module index distance, UINT, default 16 (written 0x10 in the source).
     EXPECT_TRUE(std::regex_search(page, std::regex("<td>Module index distance</td><td>UINT</td><td class=\"num\">16</td><td>ro</td><td></td><td>16</td>")))
         << "row of 0xF000:01 not found";
+}
+
+TEST(Datasheet, MarkupInNamesStaysTextAndHugeBitLengthsStayCheap) {
+    TempDir dir;
+    std::string text = read_text(sample_esi());
+    const auto replace = [&](const std::string& from, const std::string& to) {
+        const std::size_t at = text.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+    };
+    replace("<BitLen>8</BitLen>\n            <Name>Digital outputs</Name>",
+            "<BitLen>4294967295</BitLen>\n            <Name>&lt;/svg&gt;&lt;script&gt;alert(1)&lt;/script&gt; &amp; \"q\"</Name>");
+    write_text(dir / "hostile.xml", text);
+    const auto start = std::chrono::steady_clock::now();
+    const auto pages = render(load(dir / "hostile.xml"));
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(2));
+    const std::string& page = device_page(pages);
+    EXPECT_EQ(page.find("<script"), std::string::npos);
+    EXPECT_NE(page.find("&lt;/svg&gt;&lt;script&gt;alert(1)&lt;/script&gt; &amp; &quot;q&quot;"), std::string::npos);
+    EXPECT_LT(page.size(), 200'000u);
 }
 
 TEST(Datasheet, FileNamesAreUniqueEvenWithoutCase) {
