@@ -37,6 +37,27 @@ void add_version_flag(CLI::App& app, std::string_view tool) {
     app.set_version_flag("--version", std::string(tool) + " (libesi) " + std::string(version()));
 }
 
+bool parse_template_dirs(std::string_view tool, const std::vector<std::string>& given, std::vector<std::filesystem::path>& out) {
+    out.clear();
+    for (const auto& dir : given) {
+        std::error_code ec;
+        if (!std::filesystem::is_directory(dir, ec)) {
+            std::cerr << tool << ": --templates: " << dir << " is not a directory\n";
+            return false;
+        }
+        out.emplace_back(dir);
+    }
+    return true;
+}
+
+std::optional<std::filesystem::path> executable_path(const char* argv0) {
+    std::error_code ec;
+    std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) return self;
+    if (argv0 && std::string_view(argv0).find('/') != std::string_view::npos) return std::filesystem::absolute(argv0, ec);
+    return std::nullopt;
+}
+
 void write_stdout(std::string_view text) {
     std::fwrite(text.data(), 1, text.size(), stdout);
     std::fflush(stdout);

@@ -4,9 +4,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "esi/device_selector.hpp"
 
@@ -30,6 +32,14 @@ CLI::Option* add_device_option(CLI::App& app, std::string& text, const std::stri
 
 // --version prints "tool (libesi) VERSION".
 void add_version_flag(CLI::App& app, std::string_view tool);
+
+// --templates DIR...: the directories as paths. False (after printing `tool: --templates: DIR is
+// not a directory`) when one is not a directory.
+[[nodiscard]] bool parse_template_dirs(std::string_view tool, const std::vector<std::string>& given,
+                                       std::vector<std::filesystem::path>& out);
+
+// The running executable, to find <prefix>/share/libesi/templates beside an installed tool.
+[[nodiscard]] std::optional<std::filesystem::path> executable_path(const char* argv0);
 
 // Writes `text` to stdout whole and flushes.
 void write_stdout(std::string_view text);

@@ -12,6 +12,8 @@
 #include "esi/device_selector.hpp"
 #include "esi/diff/diff.hpp"
 #include "esi/diff/report.hpp"
+#include "esi/doc/datasheet.hpp"
+#include "esi/doc/diff_html.hpp"
 #include "esi/version.hpp"
 
 namespace {
@@ -38,7 +40,8 @@ int main(int argc, char** argv) {
     std::string device;
     app.add_option("OLD", old_path, "the old ESI file")->required();
     app.add_option("NEW", new_path, "the new ESI file")->required();
-    app.add_option("--format", format, "report format: text, json or markdown")->check(CLI::IsMember({"text", "json", "markdown"}));
+    app.add_option("--format", format, "report format: text, json, markdown or html")
+        ->check(CLI::IsMember({"text", "json", "markdown", "html"}));
     app.add_option("--fail-on", fail_on, "lowest class that makes the exit code 1: breaking, any or never")
         ->check(CLI::IsMember({"breaking", "any", "never"}));
     esi::cli::add_device_option(app, device, "compare only this device");
@@ -47,6 +50,7 @@ int main(int argc, char** argv) {
 
     esi::DiffOptions options;
     if (!esi::cli::parse_device_option("esi-diff", device, options.device)) return exit_usage;
+    options.keep_documents = format == "html";  // the HTML report draws both files
 
     const esi::FileDiff diff = esi::diff_files(old_path, new_path, options);
     if (!diff.result) {
@@ -62,7 +66,14 @@ int main(int argc, char** argv) {
 
     const esi::DiffLabels labels{old_path, new_path};
     std::string report;
-    if (format == "json")
+    if (format == "html") {
+        esi::doc::DiffHtmlOptions html_options;
+        html_options.template_dirs = esi::doc::template_search_path({}, esi::cli::executable_path(argc > 0 ? argv[0] : nullptr));
+        esi::doc::DiffHtml html = esi::doc::render_diff_html(*diff.old_document, *diff.new_document, result, labels, html_options);
+        for (const auto& d : html.diagnostics) print_diagnostic(d, "esi-diff");
+        if (html.diagnostics.has_errors()) return exit_usage;
+        report = std::move(html.html);
+    } else if (format == "json")
         report = esi::render_diff_json(result);
     else if (format == "markdown")
         report = esi::render_diff_markdown(result, labels);

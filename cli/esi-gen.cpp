@@ -58,15 +58,6 @@ int import_esi(const std::string& esi_path, const std::string& output, const std
     return written.has_errors() ? exit_failed : exit_ok;
 }
 
-// The running executable, to find <prefix>/share/libesi/templates beside an installed esi-gen.
-std::optional<fs::path> executable_path(const char* argv0) {
-    std::error_code ec;
-    fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) return self;
-    if (argv0 && std::string_view(argv0).find('/') != std::string_view::npos) return fs::absolute(argv0, ec);
-    return std::nullopt;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -125,15 +116,8 @@ int main(int argc, char** argv) {
     if (!esi::cli::parse_device_option("esi-gen", device, options.view.device)) return exit_usage;
     if (!prefix.empty()) options.view.symbol_prefix = prefix;
     std::vector<fs::path> user_dirs;
-    for (const auto& dir : template_dirs) {
-        std::error_code ec;
-        if (!fs::is_directory(dir, ec)) {
-            std::cerr << "esi-gen: --templates: " << dir << " is not a directory\n";
-            return exit_usage;
-        }
-        user_dirs.emplace_back(dir);
-    }
-    options.template_dirs = esi::codegen::template_search_path(user_dirs, executable_path(argc > 0 ? argv[0] : nullptr));
+    if (!esi::cli::parse_template_dirs("esi-gen", template_dirs, user_dirs)) return exit_usage;
+    options.template_dirs = esi::codegen::template_search_path(user_dirs, esi::cli::executable_path(argc > 0 ? argv[0] : nullptr));
 
     esi::LoadedDocument loaded = esi::load_document_file(source);
     print(loaded.diagnostics);

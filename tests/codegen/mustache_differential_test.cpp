@@ -12,7 +12,8 @@
 #include <vector>
 
 #include "codegen/document_view.hpp"
-#include "codegen/mustache.hpp"
+#include "codegen/view_json.hpp"
+#include "esi/codegen/mustache.hpp"
 #include "esi/xml/reader.hpp"
 #include "esi/yaml/source.hpp"
 #include "kainjow_oracle.hpp"

@@ -6,8 +6,9 @@
 
 #include <string>
 
-#include "codegen/mustache.hpp"
-#include "codegen/view_tree.hpp"
+#include "codegen/view_json.hpp"
+#include "esi/codegen/mustache.hpp"
+#include "esi/codegen/view_tree.hpp"
 
 namespace {
 

@@ -4,11 +4,10 @@
 #include <system_error>
 
 #include "codegen/document_view.hpp"
-#include "codegen/mustache.hpp"
+#include "esi/codegen/mustache.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/io/same_file.hpp"
 #include "esi/text_distance.hpp"
-#include "esi/io/read_file.hpp"
 
 namespace esi::codegen {
 
@@ -159,29 +158,10 @@ GenerateResult generate_outputs(const EsiDocument& document, const GenerateOptio
     auto load_template = [&](const std::string& name) -> LoadedTemplate* {
         if (auto it = templates.find(name); it != templates.end()) return it->second.parsed ? &it->second : nullptr;
         LoadedTemplate& loaded = templates[name];
-        const auto path = find_template(name, options.template_dirs);
-        if (!path) {
-            std::string searched;
-            for (const auto& d : options.template_dirs) searched += (searched.empty() ? "" : ", ") + d.string();
-            result.diagnostics.emplace(Severity::error, "codegen-template-missing",
-                                       "template '" + name + "' not found (searched: " + (searched.empty() ? "nothing" : searched) + ")",
-                                       "", {});
-            return nullptr;
-        }
-        loaded.path = *path;
-        std::string error;
-        const auto text = read_file_bytes(*path, error);
-        if (!text) {
-            result.diagnostics.emplace(Severity::error, "io-error", error, path->string(), {});
-            return nullptr;
-        }
-        mustache::ParseResult parsed = mustache::parse(*text);
-        if (!parsed.parsed) {
-            result.diagnostics.emplace(Severity::error, "codegen-template-error", parsed.error, path->string(), parsed.pos);
-            return nullptr;
-        }
-        loaded.parsed = std::move(parsed.parsed);
-        return &loaded;
+        TemplateFile file = codegen::load_template(name, options.template_dirs, "codegen", result.diagnostics);
+        loaded.path = std::move(file.path);
+        loaded.parsed = std::move(file.parsed);
+        return loaded.parsed ? &loaded : nullptr;
     };
 
     ViewValue context;

@@ -3,6 +3,7 @@
 #include "codegen/document_view.hpp"
 #include "esi/codegen/identifier.hpp"
 #include "codegen/values.hpp"
+#include "codegen/view_json.hpp"
 
 namespace esi::codegen {
 

@@ -13,7 +13,7 @@
 #include <cctype>
 #include <utility>
 
-#include "codegen/mustache.hpp"
+#include "esi/codegen/mustache.hpp"
 
 namespace esi::codegen::mustache {
 

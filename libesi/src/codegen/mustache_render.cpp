@@ -8,7 +8,9 @@
 
 #include <charconv>
 
-#include "codegen/mustache.hpp"
+#include <nlohmann/json.hpp>
+
+#include "esi/codegen/mustache.hpp"
 
 namespace esi::codegen::mustache {
 

@@ -1,6 +1,9 @@
 #include "esi/codegen/template_lookup.hpp"
 
+#include <string>
 #include <system_error>
+
+#include "esi/io/read_file.hpp"
 
 namespace esi::codegen {
 
@@ -31,6 +34,33 @@ std::optional<fs::path> find_template(std::string_view name, const std::vector<f
         if (fs::is_regular_file(candidate, ec)) return candidate;
     }
     return std::nullopt;
+}
+
+TemplateFile load_template(std::string_view name, const std::vector<fs::path>& dirs, std::string_view tool, Diagnostics& diagnostics) {
+    TemplateFile out;
+    const auto path = find_template(name, dirs);
+    if (!path) {
+        std::string searched;
+        for (const auto& d : dirs) searched += (searched.empty() ? "" : ", ") + d.string();
+        diagnostics.emplace(Severity::error, std::string(tool) + "-template-missing",
+                            "template '" + std::string(name) + "' not found (searched: " + (searched.empty() ? "nothing" : searched) + ")",
+                            "", {});
+        return out;
+    }
+    out.path = *path;
+    std::string error;
+    const auto text = read_file_bytes(*path, error);
+    if (!text) {
+        diagnostics.emplace(Severity::error, "io-error", error, path->string(), {});
+        return out;
+    }
+    mustache::ParseResult parsed = mustache::parse(*text);
+    if (!parsed.parsed) {
+        diagnostics.emplace(Severity::error, std::string(tool) + "-template-error", parsed.error, path->string(), parsed.pos);
+        return out;
+    }
+    out.parsed = std::move(parsed.parsed);
+    return out;
 }
 
 }  // namespace esi::codegen

@@ -1,44 +1,17 @@
 #pragma once
-// Default, minimum and maximum values of one object sub-entry, decoded the way the entry's data
-// type reads them, and spelled as C/C++ literals for the templates.
-//
-// Where a value comes from (ETG.2000 ObjectInfoType / SubItemType): DefaultValue/MinValue/MaxValue
-// (a HexDecValue), DefaultData/MinData/MaxData (hexBinary, the value's bytes little-endian as they
-// go over SDO) or DefaultString. The object's Info wins over the DataType
-// SubItem's values.
+// Entry values (esi/codegen/entry_values.hpp: decoded from the file) spelled as C/C++ literals
+// for the templates.
 
 #include <cstdint>
 #include <optional>
 #include <string>
 
-#include "codegen/view_tree.hpp"
+#include "esi/codegen/entry_values.hpp"
+#include "esi/codegen/view_tree.hpp"
 #include "esi/data_types.hpp"
 #include "esi/model/object_layout.hpp"
 
 namespace esi::codegen {
-
-// How generated code holds an entry's value.
-enum class ValueClass { signed_integer, unsigned_integer, real, string, bytes };
-
-[[nodiscard]] ValueClass value_class_of(const BasicType* basic);
-
-struct DecodedValue {
-    enum class Kind { none, signed_integer, unsigned_integer, real, string, bytes };
-    Kind kind = Kind::none;
-    std::int64_t i = 0;
-    std::uint64_t bits = 0;  // integer: two's complement truncated to the bit length; real: IEEE bits
-    double r = 0.0;
-    std::string text;  // string or raw bytes
-};
-
-// The three values of an entry (none present = Kind::none).
-struct EntryValues {
-    DecodedValue default_value;
-    DecodedValue min;
-    DecodedValue max;
-};
-
-[[nodiscard]] EntryValues decode_entry_values(const ObjectEntry& entry);
 
 // The value view documented in docs/codegen.md ("Value").
 [[nodiscard]] ViewValue value_view(ViewArena& arena, const DecodedValue& value, std::uint64_t bit_length);

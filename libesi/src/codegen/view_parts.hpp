@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "codegen/view_tree.hpp"
+#include "esi/codegen/view_tree.hpp"
 #include "esi/data_types.hpp"
 #include "esi/diagnostic.hpp"
 #include "esi/model/ethercat_info.hpp"

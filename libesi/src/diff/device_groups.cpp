@@ -1,4 +1,4 @@
-#include "diff/device_groups.hpp"
+#include "esi/diff/device_groups.hpp"
 
 #include <algorithm>
 
@@ -7,7 +7,7 @@
 #include "esi/diff/classification.hpp"
 #include "esi/number.hpp"
 
-namespace esi::diff_detail {
+namespace esi {
 
 std::vector<DeviceGroup> group_by_device(const DiffResult& result) {
     std::vector<DeviceGroup> groups;
@@ -50,4 +50,4 @@ std::string class_counts(const DiffResult& result) {
     return out;
 }
 
-}  // namespace esi::diff_detail
+}  // namespace esi

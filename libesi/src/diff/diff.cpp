@@ -462,7 +462,12 @@ FileDiff diff_files(const std::filesystem::path& old_path, const std::filesystem
         for (auto& d : r->diagnostics)
             if (d.severity == Severity::error) out.diagnostics.add(d);
     }
-    if (ok) out.result = diff_documents(*a.document, *b.document, options);
+    if (!ok) return out;
+    out.result = diff_documents(*a.document, *b.document, options);
+    if (options.keep_documents) {
+        out.old_document = std::move(a.document);
+        out.new_document = std::move(b.document);
+    }
     return out;
 }
 

@@ -4,13 +4,11 @@
 
 #include <fmt/format.h>
 
-#include "diff/device_groups.hpp"
 #include "esi/diff/classification.hpp"
+#include "esi/diff/device_groups.hpp"
 #include "esi/diff/report.hpp"
 
 namespace esi {
-
-using namespace diff_detail;
 
 namespace {
 

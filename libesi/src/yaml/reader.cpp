@@ -1,7 +1,6 @@
 #include "esi/yaml/reader.hpp"
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <cmath>
 

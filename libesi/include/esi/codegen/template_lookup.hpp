@@ -11,6 +11,9 @@
 #include <string_view>
 #include <vector>
 
+#include "esi/codegen/mustache.hpp"
+#include "esi/diagnostic.hpp"
+
 namespace esi::codegen {
 
 // <executable's directory>/../share/libesi/templates (not checked for existence).
@@ -27,5 +30,16 @@ namespace esi::codegen {
 
 // The first `dirs[i] / name` that is a regular file.
 [[nodiscard]] std::optional<std::filesystem::path> find_template(std::string_view name, const std::vector<std::filesystem::path>& dirs);
+
+struct TemplateFile {
+    std::filesystem::path path;                 // where it was found; empty when it was not
+    std::optional<mustache::Template> parsed;  // absent when missing, unreadable or broken
+};
+
+// Finds, reads and parses one template. Errors go to `diagnostics`: `<tool>-template-missing`
+// (naming the directories searched), io-error, `<tool>-template-error` at the tag's line:col;
+// `tool` is the rule prefix of the back end ("codegen", "doc").
+[[nodiscard]] TemplateFile load_template(std::string_view name, const std::vector<std::filesystem::path>& dirs,
+                                         std::string_view tool, Diagnostics& diagnostics);
 
 }  // namespace esi::codegen

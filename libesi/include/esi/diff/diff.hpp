@@ -23,6 +23,8 @@ struct DiffOptions {
     // Compare only the devices this selects (in either file); changes of the file as a whole
     // (vendor name, groups, modules) are then left out, a vendor Id change is kept.
     std::optional<DeviceSelector> device;
+    // diff_files: keep both models in the result (an HTML report draws them).
+    bool keep_documents = false;
 };
 
 struct DiffResult {
@@ -51,6 +53,9 @@ struct FileDiff {
     Diagnostics diagnostics;  // errors that prevented reading; reader warnings are not kept
     std::string old_path;
     std::string new_path;
+    // Both models, when DiffOptions::keep_documents asked for them and both files were read.
+    std::optional<EsiDocument> old_document;
+    std::optional<EsiDocument> new_document;
 };
 
 [[nodiscard]] FileDiff diff_files(const std::filesystem::path& old_path, const std::filesystem::path& new_path,

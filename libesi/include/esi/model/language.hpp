@@ -4,7 +4,10 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+
+#include "esi/model/common.hpp"
 
 namespace esi {
 
@@ -36,5 +39,9 @@ inline constexpr Language languages[] = {
         if (language.lcid == lcid) return language.code;
     return std::nullopt;
 }
+
+// The text in the language `lcid`, else what primary_text() gives (English, the text without
+// LcId, the first): how esi-doc picks a page's texts.
+[[nodiscard]] const std::string& localized_text(const Names& names, std::uint32_t lcid);
 
 }  // namespace esi

@@ -1,6 +1,7 @@
 #pragma once
-// esi-gen's Mustache engine: a template is parsed once into a flat list of instructions and
-// rendered straight over the view tree into one output buffer.
+// The Mustache engine of libesi's templates: a template is parsed once into a flat list of
+// instructions and rendered straight over the view tree into one output buffer. esi-gen renders
+// code with it (Escape::none), esi-doc renders HTML pages (Escape::html).
 //
 // Supported: text, variables ({{name}}, {{{name}}}, {{& name}}; HTML-escaped or not, see
 // Escape), sections and inverted sections over lists, objects and values, comments, set
@@ -33,7 +34,7 @@
 #include <string_view>
 #include <vector>
 
-#include "codegen/view_tree.hpp"
+#include "esi/codegen/view_tree.hpp"
 #include "esi/source_pos.hpp"
 
 namespace esi::codegen::mustache {

@@ -7,7 +7,10 @@
 // 200 ms budget of issue 3 section 5. Here every value is 16 bytes, objects and lists are
 // contiguous arrays and strings are copied once into the arena, so the view is built with a
 // handful of allocations and freed at once. The --dump-model JSON is produced by converting this
-// tree (to_json), so the documented output is unchanged.
+// tree (to_json, codegen/view_json.hpp), so the documented output is unchanged.
+//
+// Public because every back end that renders templates builds its view with it: esi-gen's code
+// and esi-doc's pages (esi/doc).
 
 #include <cstddef>
 #include <cstdint>
@@ -18,8 +21,6 @@
 #include <string_view>
 #include <type_traits>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace esi::codegen {
 
@@ -235,12 +236,5 @@ private:
     ViewArena* arena_;
     std::vector<ViewValue> items_;
 };
-
-// The JSON the view stands for (what --dump-model prints): objects keep their member order,
-// signed and unsigned integers stay apart as in nlohmann's number types.
-[[nodiscard]] nlohmann::ordered_json to_json(const ViewValue& value);
-
-// A view of a JSON document, for tests and tools that describe data as JSON.
-[[nodiscard]] ViewValue from_json(ViewArena& arena, const nlohmann::ordered_json& json);
 
 }  // namespace esi::codegen

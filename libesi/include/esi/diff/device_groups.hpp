@@ -1,13 +1,14 @@
 #pragma once
-// Internal to the diff renderers: the changes of a result grouped by device, the groups ordered
-// most severe first (errors, then breaking, compatible, cosmetic), ties in the result's order.
+// The changes of a result grouped by device, the groups ordered most severe first (errors, then
+// breaking, compatible, cosmetic), ties in the result's order: how every report (text, Markdown,
+// esi-doc's HTML) presents them.
 
 #include <string>
 #include <vector>
 
 #include "esi/diff/diff.hpp"
 
-namespace esi::diff_detail {
+namespace esi {
 
 struct DeviceGroup {
     const std::optional<DeviceRef>* device = nullptr;  // of the first change; null optional: the file
@@ -24,4 +25,4 @@ struct DeviceGroup {
 // "3 breaking, 1 compatible, 2 cosmetic" (classes with no change left out); "no changes".
 [[nodiscard]] std::string class_counts(const DiffResult& result);
 
-}  // namespace esi::diff_detail
+}  // namespace esi
