@@ -384,7 +384,7 @@ bool sent_in_pre_operational(std::string_view transition) { return transition ==
 
 void check_pdo_transition(const EsiDocument& document, RuleContext& context) {
     for_each_init_cmd(document, [&](const InitCmdSite& site) {
-        if (site.protocol != Protocol::coe || !site.cmd->index || !is_pdo_configuration(*site.cmd->index)) return;
+        if (site.protocol != MailboxProtocol::coe || !site.cmd->index || !is_pdo_configuration(*site.cmd->index)) return;
         for (const auto& t : site.cmd->transitions) {
             // Unknown transitions and those down to Init or into Bootstrap, which masters do not
             // send, are the other initcmd-transition rules' findings.

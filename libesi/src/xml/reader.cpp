@@ -16,8 +16,8 @@
 
 #include "esi/encoding.hpp"
 #include "xml/reader_context.hpp"
-#include "xml/well_formed.hpp"
-#include "xml/xinclude.hpp"
+#include "esi/xml/well_formed.hpp"
+#include "esi/xml/xinclude.hpp"
 
 namespace esi {
 

@@ -4,7 +4,7 @@
 // through a byte-class table until the next byte that can matter, so the pass costs about as much
 // as reading the text once.
 
-#include "xml/well_formed.hpp"
+#include "esi/xml/well_formed.hpp"
 
 #include <array>
 #include <algorithm>

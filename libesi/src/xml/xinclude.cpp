@@ -1,4 +1,4 @@
-#include "xml/xinclude.hpp"
+#include "esi/xml/xinclude.hpp"
 
 namespace esi {
 

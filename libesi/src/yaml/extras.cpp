@@ -2,8 +2,8 @@
 
 #include <pugixml.hpp>
 
-#include "xml/well_formed.hpp"
-#include "xml/xinclude.hpp"
+#include "esi/xml/well_formed.hpp"
+#include "esi/xml/xinclude.hpp"
 
 namespace esi::yaml {
 
