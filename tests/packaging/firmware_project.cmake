@@ -7,6 +7,8 @@
 #                      command line (libesi_DIR, ESI_GEN_EXECUTABLE).
 #   MODE subdirectory  the snippet's find_package() replaced by add_subdirectory() of SOURCE_DIR,
 #                      with ESI_GEN_EXECUTABLE; the program runs.
+#   MODE subdirectory-without-esi-gen  the same without ESI_GEN_EXECUTABLE: configuring fails and
+#                      says to set it.
 # Other parameters: SOURCE_DIR (the libesi checkout), WORK (scratch directory, emptied first),
 # GENERATOR and C_COMPILER (those of the calling build).
 cmake_minimum_required(VERSION 3.25)
@@ -53,7 +55,7 @@ elseif(MODE STREQUAL "cross")
         "set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE ONLY)\n")
     list(APPEND configure --toolchain "${WORK}/toolchain.cmake" "-Dlibesi_DIR=${PREFIX}/lib/cmake/libesi"
          "-DESI_GEN_EXECUTABLE=${PREFIX}/bin/esi-gen")
-elseif(MODE STREQUAL "subdirectory")
+elseif(MODE MATCHES "^subdirectory")
     file(READ "${project}/CMakeLists.txt" lists)
     string(REGEX REPLACE "find_package\\(libesi[^)]*\\)" "add_subdirectory(\"${SOURCE_DIR}\" libesi EXCLUDE_FROM_ALL)"
            replaced "${lists}")
@@ -61,9 +63,11 @@ elseif(MODE STREQUAL "subdirectory")
         message(FATAL_ERROR "the README snippet has no find_package(libesi ...) to replace")
     endif()
     file(WRITE "${project}/CMakeLists.txt" "${replaced}")
-    list(APPEND configure "-DESI_GEN_EXECUTABLE=${PREFIX}/bin/esi-gen")
+    if(MODE STREQUAL "subdirectory")
+        list(APPEND configure "-DESI_GEN_EXECUTABLE=${PREFIX}/bin/esi-gen")
+    endif()
 else()
-    message(FATAL_ERROR "MODE must be native, cross or subdirectory")
+    message(FATAL_ERROR "MODE must be native, cross, subdirectory or subdirectory-without-esi-gen")
 endif()
 
 function(run what)
@@ -74,6 +78,14 @@ function(run what)
     set(output "${out}${err}" PARENT_SCOPE)
 endfunction()
 
+if(MODE STREQUAL "subdirectory-without-esi-gen")
+    execute_process(COMMAND ${configure} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE result)
+    if(result EQUAL 0 OR NOT err MATCHES "set ESI_GEN_EXECUTABLE to an installed esi-gen")
+        message(FATAL_ERROR "configuring without ESI_GEN_EXECUTABLE: exit ${result}, not the error that names it:\n${out}${err}")
+    endif()
+    message(STATUS "${MODE}: configuring fails and names ESI_GEN_EXECUTABLE")
+    return()
+endif()
 run("configure" ${configure})
 run("build" "${CMAKE_COMMAND}" --build "${build}" --target firmware)
 if(NOT EXISTS "${build}/generated/slave_tables.c")
