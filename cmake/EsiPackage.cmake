@@ -5,6 +5,7 @@
 
 # The static libraries carry the debug information of a RelWithDebInfo build (hundreds of MB);
 # `cmake --install --strip` and CPack (CPACK_STRIP_FILES) strip the tools but never archives.
+if(CMAKE_STRIP)
 install(CODE "
 if(CMAKE_INSTALL_DO_STRIP)
     file(GLOB esi_archives \"\$ENV{DESTDIR}\${CMAKE_INSTALL_PREFIX}/${CMAKE_INSTALL_LIBDIR}/libesi*.a\")
@@ -16,6 +17,7 @@ if(CMAKE_INSTALL_DO_STRIP)
     endforeach()
 endif()
 ")
+endif()
 
 set(CPACK_PACKAGE_NAME libesi)
 set(CPACK_PACKAGE_VENDOR "libesi")
