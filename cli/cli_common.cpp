@@ -3,11 +3,14 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli_reference.hpp"
 #include "esi/version.hpp"
 
 namespace esi::cli {
 
 std::optional<int> parse_or_exit(CLI::App& app, int argc, char** argv) {
+    // The man page and the shell completions are rendered from this App (cli_reference.hpp).
+    if (const std::optional<int> printed = print_reference_if_asked(app, argc, argv)) return printed;
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {

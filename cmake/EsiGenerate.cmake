@@ -16,9 +16,18 @@
 # dependency, so adding a device re-runs CMake. Call it in the directory that defines TARGET
 # (CMake attaches custom commands to targets of the same directory).
 #
-# Variables (set by libesiConfig.cmake; override to use another esi-gen or template set):
-#   LIBESI_ESI_GEN_EXECUTABLE  the esi-gen program
-#   LIBESI_TEMPLATE_DIR        the installed templates
+# Which esi-gen runs, first that is set:
+#   ESI_GEN_EXECUTABLE         cache variable: a host esi-gen. A cross-compiled firmware build sets
+#                              it, as protobuf's generators take a host protoc, because the
+#                              generator runs on the build machine, never on the target.
+#   LIBESI_ESI_GEN_EXECUTABLE  set by libesiConfig.cmake: the installed package's esi-gen
+#   esi-gen on PATH
+# esi-gen runs at configure time (--list-outputs), so it must exist before the build starts: a
+# project that adds libesi with add_subdirectory() sets ESI_GEN_EXECUTABLE to an installed esi-gen.
+# LIBESI_TEMPLATE_DIR (set by libesiConfig.cmake) is searched after the TEMPLATES directories.
+
+set(ESI_GEN_EXECUTABLE "" CACHE FILEPATH
+    "esi-gen run by esi_generate() (a program of the build machine); empty: the one of the libesi package")
 
 function(esi_generate)
     cmake_parse_arguments(PARSE_ARGV 0 ARG "" "TARGET;SOURCE;OUTPUT_DIR;DEVICE;PREFIX;CONFIG" "ONLY;TEMPLATES")
@@ -34,10 +43,24 @@ function(esi_generate)
         message(FATAL_ERROR "esi_generate: ${ARG_TARGET} is not a target")
     endif()
 
-    set(esi_gen "${LIBESI_ESI_GEN_EXECUTABLE}")
+    set(esi_gen "${ESI_GEN_EXECUTABLE}")
     if(NOT esi_gen)
-        find_program(LIBESI_ESI_GEN_PROGRAM esi-gen REQUIRED)
+        set(esi_gen "${LIBESI_ESI_GEN_EXECUTABLE}")
+    endif()
+    if(NOT esi_gen AND TARGET esi-gen)
+        # libesi is a subdirectory of this build: its esi-gen is only built after configuring.
+        message(FATAL_ERROR "esi_generate: esi-gen of this build does not exist while CMake configures; "
+                            "set ESI_GEN_EXECUTABLE to an installed esi-gen (see README.md, \"Firmware builds\")")
+    endif()
+    if(NOT esi_gen)
+        find_program(LIBESI_ESI_GEN_PROGRAM esi-gen)
+        if(NOT LIBESI_ESI_GEN_PROGRAM)
+            message(FATAL_ERROR "esi_generate: no esi-gen: set ESI_GEN_EXECUTABLE or find_package(libesi)")
+        endif()
         set(esi_gen "${LIBESI_ESI_GEN_PROGRAM}")
+    endif()
+    if(NOT EXISTS "${esi_gen}")
+        message(FATAL_ERROR "esi_generate: esi-gen ${esi_gen} does not exist")
     endif()
 
     get_filename_component(source "${ARG_SOURCE}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
@@ -85,7 +108,7 @@ function(esi_generate)
     execute_process(COMMAND "${esi_gen}" ${args} --list-outputs
                     OUTPUT_VARIABLE listed ERROR_VARIABLE errors RESULT_VARIABLE result)
     if(NOT result EQUAL 0)
-        message(FATAL_ERROR "esi_generate: esi-gen cannot generate from ${source}:\n${errors}")
+        message(FATAL_ERROR "esi_generate: ${esi_gen} cannot generate from ${source} (exit ${result}):\n${errors}")
     endif()
     string(REGEX REPLACE "\n$" "" listed "${listed}")
     string(REPLACE "\n" ";" outputs "${listed}")

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Installs the Debian 12 packages libesi builds and tests with, when any is missing.
-# Runs as root (CI, fresh machines) or through sudo when it is available.
+# Runs as root (CI, fresh machines) or through sudo when it is available. groff, man, zsh and fish
+# are for the tests of the man pages and shell completions (tests/packaging/).
 #   --with-browser  also headless Chromium, for the browser test of esi-doc's pages
 #                   (tests/doc/browser_test.cpp; it skips where Chromium is absent)
 set -eu
@@ -8,7 +9,8 @@ set -eu
 packages="build-essential cmake ninja-build pkgconf git
 libpugixml-dev libcli11-dev libfmt-dev nlohmann-json3-dev libyaml-dev
 libgtest-dev libgmock-dev libbenchmark-dev libkainjow-mustache-dev libxml2-dev libxml2-utils
-clang libclang-rt-14-dev ccache"
+clang libclang-rt-14-dev ccache
+groff-base man-db zsh fish"
 [ "${1:-}" = "--with-browser" ] && packages="$packages chromium"
 
 missing=""
