@@ -1,5 +1,5 @@
 #pragma once
-// The view diff.html.mustache renders (docs/esi-doc.md, "The diff view"): the change list with
+// The view diff.html.mustache renders (docs/esi-doc.md, "The diff page"): the change list with
 // the breaking changes first and, per device, the pictures of what differs, old beside new.
 // Apart from render_diff_html so that tests walk the very view the template sees.
 
