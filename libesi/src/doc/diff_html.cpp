@@ -122,10 +122,10 @@ ViewValue diff_view(ViewArena& arena, const EsiDocument& old_document, const Esi
     PageObject root(arena);
     PageCommon common;
     common.source_file = std::filesystem::path(labels.new_path).filename().string();
-    common.lang = html_lang(lcid);
     std::set<std::uint32_t> lcids;
     for (const auto* document : {&old_document, &new_document})
         for (const auto& info : document->infos) collect_languages(info, lcids);
+    common.lang = html_lang(page_language(lcid, lcids));
     common.languages = languages_text(lcids);
     common.css = std::move(css);
     add_common(root, common);

@@ -16,9 +16,9 @@ namespace {
 PageCommon common_of(const EsiDocument& document, std::uint32_t lcid, std::string css) {
     PageCommon c;
     c.source_file = fs::path(document.path).filename().string();
-    c.lang = html_lang(lcid);
     std::set<std::uint32_t> lcids;
     for (const auto& info : document.infos) collect_languages(info, lcids);
+    c.lang = html_lang(page_language(lcid, lcids));
     c.languages = languages_text(lcids);
     c.css = std::move(css);
     for (const auto& info : document.infos)
