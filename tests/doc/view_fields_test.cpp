@@ -5,7 +5,8 @@
 // The views are walked as built (doc/page_views.hpp, doc/diff_view.hpp), over the samples and the
 // diff test data always, and over corpus files that have what the samples lack (InitCmds, slots,
 // dictionary and module files) when ../shared is present. Without the corpus only "no
-// undocumented field" is checked: the samples alone do not fill every list.
+// undocumented field" is checked: the samples alone do not fill every list. A third test checks
+// that the shipped templates use only documented fields.
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,7 @@
 #include <map>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -152,6 +154,28 @@ TEST(DocViewFields, EveryDocumentedFieldIsInTheViews) {
         ASSERT_TRUE(it != seen.end()) << "no view of the " << page << " page was built";
         for (const auto& [path, keys] : missing(fields, it->second))
             ADD_FAILURE() << "`" << (path.empty() ? "The root" : path) << "`: documented but in no view: " << describe(keys);
+    }
+}
+
+// Every name the shipped templates use is a documented field of their page, so a template cannot
+// rely on a field the docs (and so the views) do not have.
+TEST(DocViewFields, TheShippedTemplatesUseOnlyDocumentedFields) {
+    const PageFields listed = documented_fields();
+    const std::regex tag(R"(\{\{\{?\s*[#^/&]?\s*([A-Za-z_][A-Za-z0-9_.]*)\s*\}?\}\})");
+    for (const auto& [file, page] : std::map<std::string, std::string>{
+             {"device.html.mustache", "device"}, {"index.html.mustache", "index"}, {"diff.html.mustache", "diff"}}) {
+        SCOPED_TRACE(file);
+        std::set<std::string> fields;
+        for (const auto& [path, keys] : listed.at(page)) fields.insert(keys.begin(), keys.end());
+        const std::string text = esi::test::read_text(esi::test::source_dir() / "templates" / "doc" / file);
+        std::set<std::string> used;
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), tag); it != std::sregex_iterator(); ++it) used.insert((*it)[1].str());
+        EXPECT_GT(used.size(), 10u);
+        for (const std::string& name : used) {
+            std::string segment;
+            std::istringstream parts(name);
+            while (std::getline(parts, segment, '.')) EXPECT_TRUE(fields.contains(segment)) << "{{" << name << "}}: not a documented field";
+        }
     }
 }
 
