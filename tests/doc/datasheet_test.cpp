@@ -8,6 +8,7 @@
 #include <map>
 #include <regex>
 
+#include "doc/page_root.hpp"
 #include "doc_test_support.hpp"
 #include "esi/doc/datasheet.hpp"
 
@@ -124,7 +125,35 @@ TEST(Datasheet, NamesComeInTheChosenLanguageAndFallBackToEnglish) {
     const auto french = render(document, options);
     const std::string& fallback = device_page(french);
     EXPECT_NE(fallback.find("<h1>EX-DIO-8 8 inputs, 8 outputs (EX-DIO-8)</h1>"), std::string::npos);
-    EXPECT_NE(fallback.find("<html lang=\"fr\">"), std::string::npos);
+    // <html lang> names the language the page is read in (WCAG 2.1, 3.1.1): English here.
+    EXPECT_NE(fallback.find("<html lang=\"en\">"), std::string::npos);
+    EXPECT_NE(french.at("out/index.html").find("<html lang=\"en\">"), std::string::npos);
+}
+
+TEST(Datasheet, PageLanguageIsTheLanguageTheNamesAreIn) {
+    // A file whose names are German only: German whatever is asked for, as the names fall back to it.
+    std::string text = read_text(sample_esi());
+    const auto replace = [&](std::string_view from, std::string_view to) {
+        const auto at = text.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+    };
+    replace(R"(<Name LcId="1033">Example Automation GmbH</Name>)", R"(<Name LcId="1031">Beispiel Automation GmbH</Name>)");
+    replace(R"(<Name LcId="1033">Digital I/O</Name>)", "");
+    replace(R"(<Name LcId="1033">EX-DIO-8 8 inputs, 8 outputs</Name>)", "");
+    esi::test::TempDir dir;
+    write_text(dir / "german.xml", text);
+    const auto document = load(dir / "german.xml");
+    auto options = default_options();
+    options.lcid = 1036;
+    const auto pages = render(document, options);
+    EXPECT_NE(device_page(pages).find("<html lang=\"de\">"), std::string::npos);
+    EXPECT_NE(device_page(pages).find("Eingänge"), std::string::npos);
+
+    EXPECT_EQ(esi::doc::page_language(1031, {1031, 1033}), 1031u);
+    EXPECT_EQ(esi::doc::page_language(1036, {1031, 1033}), 1033u);
+    EXPECT_EQ(esi::doc::page_language(1036, {}), 1033u);
+    EXPECT_EQ(esi::doc::page_language(1036, {1041, 1031}), 1031u);
 }
 
 TEST(Datasheet, LanguagesAreCodesOrLcIds) {

@@ -8,8 +8,8 @@
 #include <set>
 
 #include "doc/layout_marks.hpp"
+#include "doc/diff_view.hpp"
 #include "doc/markup.hpp"
-#include "doc/page_context.hpp"
 #include "doc/page_root.hpp"
 #include "doc/page_templates.hpp"
 #include "doc/process_data.hpp"
@@ -117,23 +117,17 @@ std::vector<PicturePair> picture_pairs(const Device* old_device, const Device* n
 
 }  // namespace
 
-DiffHtml render_diff_html(const EsiDocument& old_document, const EsiDocument& new_document, const DiffResult& result,
-                          const DiffLabels& labels, const DiffHtmlOptions& options) {
-    DiffHtml out;
-    std::optional<Template> page = load_page_template("diff.html.mustache", options.template_dirs, out.diagnostics);
-    std::optional<std::string> css = load_stylesheet(options.template_dirs, out.diagnostics);
-    if (out.diagnostics.has_errors()) return out;
-
-    ViewArena arena;
+ViewValue diff_view(ViewArena& arena, const EsiDocument& old_document, const EsiDocument& new_document, const DiffResult& result,
+                    const DiffLabels& labels, std::uint32_t lcid, std::string css) {
     PageObject root(arena);
     PageCommon common;
     common.source_file = std::filesystem::path(labels.new_path).filename().string();
-    common.lang = html_lang(options.lcid);
     std::set<std::uint32_t> lcids;
     for (const auto* document : {&old_document, &new_document})
         for (const auto& info : document->infos) collect_languages(info, lcids);
+    common.lang = html_lang(page_language(lcid, lcids));
     common.languages = languages_text(lcids);
-    common.css = std::move(*css);
+    common.css = std::move(css);
     add_common(root, common);
     root.add("old_label", labels.old_path);
     root.add("new_label", labels.new_path);
@@ -175,7 +169,7 @@ DiffHtml render_diff_html(const EsiDocument& old_document, const EsiDocument& ne
         if (const auto& ref = *group.device) {
             const Device* new_device = find_device(new_document, ref->product_code, ref->revision);
             const Device* old_device = find_device(old_document, ref->product_code, ref->compared_revision ? ref->compared_revision : ref->revision);
-            for (PicturePair& pair : picture_pairs(old_device, new_device, options.lcid, id)) {
+            for (PicturePair& pair : picture_pairs(old_device, new_device, lcid, id)) {
                 mark_changes(pair.old_fields, pair.new_fields);
                 PageObject p(arena);
                 p.add("id", pair.id);
@@ -200,7 +194,18 @@ DiffHtml render_diff_html(const EsiDocument& old_document, const EsiDocument& ne
         devices.add(g.finish());
     }
     root.add("devices", devices.finish());
-    page->render(root.finish(), out.html, codegen::mustache::Escape::html);
+    return root.finish();
+}
+
+DiffHtml render_diff_html(const EsiDocument& old_document, const EsiDocument& new_document, const DiffResult& result,
+                          const DiffLabels& labels, const DiffHtmlOptions& options) {
+    DiffHtml out;
+    std::optional<Template> page = load_page_template("diff.html.mustache", options.template_dirs, out.diagnostics);
+    std::optional<std::string> css = load_stylesheet(options.template_dirs, out.diagnostics);
+    if (out.diagnostics.has_errors()) return out;
+    ViewArena arena;
+    const ViewValue view = diff_view(arena, old_document, new_document, result, labels, options.lcid, std::move(*css));
+    page->render(view, out.html, codegen::mustache::Escape::html);
     return out;
 }
 

@@ -42,4 +42,10 @@ std::string html_lang(std::uint32_t lcid) {
     return code ? std::string(*code) : std::string("en");
 }
 
+std::uint32_t page_language(std::uint32_t lcid, const std::set<std::uint32_t>& file_lcids) {
+    if (file_lcids.contains(lcid)) return lcid;
+    if (file_lcids.empty() || file_lcids.contains(default_lcid)) return default_lcid;
+    return *file_lcids.begin();
+}
+
 }  // namespace esi::doc
