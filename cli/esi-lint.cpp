@@ -13,7 +13,9 @@
 #include "esi/check/registry.hpp"
 #include "esi/io/read_file.hpp"
 #include "esi/lint/lint.hpp"
+#include "esi/report/gitlab.hpp"
 #include "esi/report/lint_output.hpp"
+#include "esi/report/sarif.hpp"
 #include "esi/version.hpp"
 #include "out_of_memory.hpp"
 
@@ -46,8 +48,14 @@ int main(int argc, char** argv) {
     std::string color;
     unsigned jobs = 0;
     app.add_option("paths", paths, "ESI files, directories (recursive *.xml) or - for stdin");
-    app.add_option("--format", format, "text, json, sarif or github (with --list-rules: text, json or markdown)")
-        ->check(CLI::IsMember({"text", "json", "sarif", "github", "markdown"}));
+    std::string sarif_help_base;
+    app.add_option("--format", format,
+                   "text, json, sarif, github (workflow annotations) or gitlab (Code Quality report); with --list-rules: text, "
+                   "json or markdown")
+        ->check(CLI::IsMember({"text", "json", "sarif", "github", "gitlab", "markdown"}));
+    app.add_option("--sarif-help-base", sarif_help_base,
+                   "sarif: the published address of docs/rules.md; each rule's helpUri is URL#rule-id")
+        ->type_name("URL");
     app.add_option("--fail-on", fail_on, "lowest severity that makes the exit code 1")
         ->check(CLI::IsMember({"error", "warning", "info", "never"}));
     app.add_option("--config", config, "config file (default: nearest .esi-lint.yaml upwards from each file)");
@@ -123,9 +131,15 @@ int main(int argc, char** argv) {
         report.files.push_back(esi::lint_bytes(*bytes, "<stdin>", effective, options.xsd_dir));
     }
 
+    std::error_code no_cwd;
+    const std::filesystem::path source_root = std::filesystem::current_path(no_cwd);  // the checkout root in CI
     std::string output;
     if (format == "json") output = esi::render_json(report);
-    else if (format == "sarif") output = esi::render_sarif(report, esi::version());
+    else if (format == "sarif")
+        output = esi::render_sarif(report, {.tool_version = std::string(esi::version()),
+                                            .source_root = source_root,
+                                            .rules_url = sarif_help_base});
+    else if (format == "gitlab") output = esi::render_gitlab(report, source_root);
     else if (format == "github") output = esi::render_github(report);
     else output = esi::render_text(report, {.show_source = !no_source, .color = esi::cli::color_enabled(color, STDOUT_FILENO)});
     esi::cli::write_stdout(output);
