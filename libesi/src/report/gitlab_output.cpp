@@ -36,7 +36,7 @@ std::string render_gitlab(const LintReport& report, const std::filesystem::path&
     };
     for (const auto& d : report.config_diagnostics) add(d, no_lines, true);
     for (const auto& file : report.files)
-        for (const auto& d : file.diagnostics) add(d, file.quoted_lines, file.unreadable && d.rule == "io-error");
+        for (const auto& d : file.diagnostics) add(d, file.quoted_lines, report_detail::is_execution_problem(file, d));
     return issues.dump(2, ' ', false, nlohmann::detail::error_handler_t::replace) + "\n";
 }
 

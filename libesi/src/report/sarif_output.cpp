@@ -71,10 +71,6 @@ ordered_json physical_location(const Locator& locator, const std::string& path, 
     return physical;
 }
 
-// Diagnostics that say the run could not do its work: a file it could not read (io-error), a
-// broken config or schema directory. They go to toolExecutionNotifications.
-bool is_execution_problem(const FileReport& file, const Diagnostic& d) { return file.unreadable && d.rule == "io-error"; }
-
 }  // namespace
 
 std::string render_sarif(const LintReport& report, const SarifOptions& options) {
@@ -108,7 +104,7 @@ std::string render_sarif(const LintReport& report, const SarifOptions& options) 
     report_detail::Fingerprints fingerprints;
     for (const auto& file : report.files) {
         for (const auto& d : file.diagnostics) {
-            if (is_execution_problem(file, d)) {
+            if (report_detail::is_execution_problem(file, d)) {
                 notify(d);
                 continue;
             }
