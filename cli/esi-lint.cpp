@@ -47,7 +47,8 @@ int main(int argc, char** argv) {
     bool no_source = false;
     std::string color;
     unsigned jobs = 0;
-    app.add_option("paths", paths, "ESI files, directories (recursive *.xml; hidden folders and CMake build trees skipped) or - for stdin");
+    app.add_option("paths", paths,
+                   "ESI files, directories (recursive *.xml; hidden folders and CMake build trees skipped) or - for stdin");
     std::string sarif_help_base;
     app.add_option("--format", format,
                    "text, json, sarif, github (workflow annotations) or gitlab (Code Quality report); with --list-rules: text, "

@@ -117,7 +117,9 @@ std::string render_sarif(const LintReport& report, const SarifOptions& options) 
                 ordered_json related = ordered_json::array();
                 int id = 0;
                 for (const auto& n : d.notes)
-                    related.push_back({{"id", id++}, {"physicalLocation", physical_location(locator, n.path, n.pos)}, {"message", {{"text", n.message}}}});
+                    related.push_back({{"id", id++},
+                                       {"physicalLocation", physical_location(locator, n.path, n.pos)},
+                                       {"message", {{"text", n.message}}}});
                 result["relatedLocations"] = std::move(related);
             }
             result["partialFingerprints"] = {
