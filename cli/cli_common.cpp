@@ -5,6 +5,7 @@
 
 #include "cli_reference.hpp"
 #include "esi/version.hpp"
+#include "subcommand_usage.hpp"
 
 namespace esi::cli {
 
@@ -16,7 +17,8 @@ std::optional<int> parse_or_exit(CLI::App& app, int argc, char** argv) {
     } catch (const CLI::Success& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        app.exit(e);
+        if (const std::optional<std::string> usage = subcommand_usage(app, argc, argv)) std::cerr << *usage;
+        else app.exit(e);
         return exit_usage;
     }
     return std::nullopt;

@@ -14,6 +14,7 @@
 #include "esi/diff/report.hpp"
 #include "esi/doc/datasheet.hpp"
 #include "esi/doc/diff_html.hpp"
+#include "esi/io/read_file.hpp"
 #include "esi/version.hpp"
 
 namespace {
@@ -38,8 +39,9 @@ int main(int argc, char** argv) {
     std::string format = "text";
     std::string fail_on = "breaking";
     std::string device;
-    app.add_option("OLD", old_path, "the old ESI file")->required();
-    app.add_option("NEW", new_path, "the new ESI file")->required();
+    app.add_option("OLD", old_path, "the old ESI file, or - for standard input (git show REV:dev.xml | esi-diff - dev.xml)")
+        ->required();
+    app.add_option("NEW", new_path, "the new ESI file, or - for standard input")->required();
     app.add_option("--format", format, "report format: text, json, markdown or html")
         ->check(CLI::IsMember({"text", "json", "markdown", "html"}));
     app.add_option("--fail-on", fail_on, "lowest class that makes the exit code 1: breaking, any or never")
@@ -52,7 +54,23 @@ int main(int argc, char** argv) {
     if (!esi::cli::parse_device_option("esi-diff", device, options.device)) return exit_usage;
     options.keep_documents = format == "html";  // the HTML report draws both files
 
-    const esi::FileDiff diff = esi::diff_files(old_path, new_path, options);
+    if (old_path == "-" && new_path == "-") {
+        std::cerr << "esi-diff: only one of OLD and NEW can be - (standard input)\n";
+        return exit_usage;
+    }
+    esi::DiffSource old_source{old_path, std::nullopt};
+    esi::DiffSource new_source{new_path, std::nullopt};
+    for (esi::DiffSource* source : {&old_source, &new_source}) {
+        if (source->path != "-") continue;
+        source->path = "<stdin>";
+        std::string error;
+        source->bytes = esi::read_stdin_bytes(error);
+        if (!source->bytes) {
+            std::cerr << "esi-diff: <stdin>: cannot read: " << error << "\n";
+            return exit_usage;
+        }
+    }
+    const esi::FileDiff diff = esi::diff_sources(std::move(old_source), std::move(new_source), options);
     if (!diff.result) {
         for (const auto& d : diff.diagnostics) print_diagnostic(d, "");
         if (diff.diagnostics.empty()) std::cerr << "esi-diff: could not read the input files\n";
@@ -64,7 +82,7 @@ int main(int argc, char** argv) {
         return exit_usage;
     }
 
-    const esi::DiffLabels labels{old_path, new_path};
+    const esi::DiffLabels labels{diff.old_path, diff.new_path};
     std::string report;
     if (format == "html") {
         esi::doc::DiffHtmlOptions html_options;

@@ -9,9 +9,13 @@
 #include <unistd.h>
 
 #include "cli_common.hpp"
+#include "color_option.hpp"
+#include "esi/check/registry.hpp"
 #include "esi/io/read_file.hpp"
 #include "esi/lint/lint.hpp"
+#include "esi/report/gitlab.hpp"
 #include "esi/report/lint_output.hpp"
+#include "esi/report/sarif.hpp"
 #include "esi/version.hpp"
 #include "out_of_memory.hpp"
 
@@ -41,11 +45,18 @@ int main(int argc, char** argv) {
     std::string explain;
     bool list_rules = false;
     bool no_source = false;
-    bool color = false;
+    std::string color;
     unsigned jobs = 0;
-    app.add_option("paths", paths, "ESI files, directories (recursive *.xml) or - for stdin");
-    app.add_option("--format", format, "text, json, sarif or github (with --list-rules: text, json or markdown)")
-        ->check(CLI::IsMember({"text", "json", "sarif", "github", "markdown"}));
+    app.add_option("paths", paths,
+                   "ESI files, directories (recursive *.xml; hidden folders and CMake build trees skipped) or - for stdin");
+    std::string sarif_help_base;
+    app.add_option("--format", format,
+                   "text, json, sarif, github (workflow annotations) or gitlab (Code Quality report); with --list-rules: text, "
+                   "json or markdown")
+        ->check(CLI::IsMember({"text", "json", "sarif", "github", "gitlab", "markdown"}));
+    app.add_option("--sarif-help-base", sarif_help_base,
+                   "sarif: the published address of docs/rules.md; each rule's helpUri is URL#rule-id")
+        ->type_name("URL");
     app.add_option("--fail-on", fail_on, "lowest severity that makes the exit code 1")
         ->check(CLI::IsMember({"error", "warning", "info", "never"}));
     app.add_option("--config", config, "config file (default: nearest .esi-lint.yaml upwards from each file)");
@@ -54,7 +65,7 @@ int main(int argc, char** argv) {
     app.add_option("--explain", explain, "print one rule's rationale with a bad and a good example");
     app.add_option("-j,--jobs", jobs, "files linted in parallel (default: all cores)");
     app.add_flag("--no-source", no_source, "text format: do not quote the source line");
-    app.add_flag("--color", color, "text format: colour the output");
+    esi::cli::add_color_option(app, color, "text format output");
     esi::cli::add_version_flag(app, "esi-lint");
     if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
 
@@ -71,7 +82,9 @@ int main(int argc, char** argv) {
     if (!explain.empty()) {
         const std::string text = esi::render_rule_explanation(explain);
         if (text.empty()) {
-            std::cerr << "esi-lint: unknown rule '" << explain << "' (see --list-rules)\n";
+            const std::string_view nearest = esi::nearest_rule_id(explain);
+            std::cerr << "esi-lint: unknown rule '" << explain << "'"
+                      << (nearest.empty() ? "" : "; did you mean '" + std::string(nearest) + "'?") << " (see --list-rules)\n";
             return exit_usage;
         }
         std::cout << text;
@@ -119,11 +132,17 @@ int main(int argc, char** argv) {
         report.files.push_back(esi::lint_bytes(*bytes, "<stdin>", effective, options.xsd_dir));
     }
 
+    std::error_code no_cwd;
+    const std::filesystem::path source_root = std::filesystem::current_path(no_cwd);  // the checkout root in CI
     std::string output;
     if (format == "json") output = esi::render_json(report);
-    else if (format == "sarif") output = esi::render_sarif(report, esi::version());
+    else if (format == "sarif")
+        output = esi::render_sarif(report, {.tool_version = std::string(esi::version()),
+                                            .source_root = source_root,
+                                            .rules_url = sarif_help_base});
+    else if (format == "gitlab") output = esi::render_gitlab(report, source_root);
     else if (format == "github") output = esi::render_github(report);
-    else output = esi::render_text(report, {.show_source = !no_source, .color = color && isatty(STDOUT_FILENO)});
+    else output = esi::render_text(report, {.show_source = !no_source, .color = esi::cli::color_enabled(color, STDOUT_FILENO)});
     esi::cli::write_stdout(output);
 
     if (report.any_unreadable() || report.config_diagnostics.has_errors()) return exit_usage;

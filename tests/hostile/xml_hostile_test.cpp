@@ -322,10 +322,11 @@ TEST(HostileXml, ADirectoryIsAnIoErrorNotACrash) {
     const esi::Diagnostic* io = find(read.diagnostics, "io-error");
     ASSERT_NE(io, nullptr);
     EXPECT_NE(io->message.find("directory"), std::string::npos);
-    // A directory named like a file is searched, not read: no file, nothing to report.
+    // A directory named like a file is searched, not read; holding no ESI file, it is a usage
+    // error (docs/esi-lint.md: an empty walk must not pass CI), not a crash.
     const auto lint = run_child({lint_tool(), (dir / "trap.xml").string()});
-    EXPECT_EQ(lint.exit_code, 0) << lint.out << lint.err;
-    EXPECT_NE(lint.out.find("in 0 files"), std::string::npos) << lint.out;
+    EXPECT_EQ(lint.exit_code, 2) << lint.out << lint.err;
+    EXPECT_NE(lint.out.find("no ESI files (*.xml) in this directory"), std::string::npos) << lint.out;
 }
 
 TEST(HostileXml, AnUnreadableFileIsExitCodeTwo) {

@@ -308,6 +308,25 @@ TEST(YamlSchema, RejectsUnknownKeysWrongTypesAndMissingKeys) {
     EXPECT_FALSE(validator.validate(bad_key).empty());
 }
 
+// An editor flags a misspelt data type (issue 14, item 8) and accepts every form the parser does.
+TEST(YamlSchema, RejectsAMisspeltDataType) {
+    Validator validator(load_schema());
+    const json base = yaml_file_to_json(esi::test::source_dir() / "samples" / "digital-io-8.yaml");
+    ASSERT_TRUE(base["devices"][0]["objects"].contains("0x8000"));
+    auto with_type = [&](const std::string& type) {
+        json changed = base;
+        changed["devices"][0]["objects"]["0x8000"]["type"] = type;
+        return join(validator.validate(changed));
+    };
+    EXPECT_NE(with_type("UNIT"), "");
+    EXPECT_NE(with_type("BOLL"), "");
+    for (const char* good : {"UINT", "BIT3", "STRING(8)", "ARRAY [0..3] OF BYTE", "DT0800EN08", "UINT_IDN", "UINT1"})
+        EXPECT_EQ(with_type(good), "") << good;
+    json entry = base;
+    entry["devices"][0]["objects"]["0x6000"]["entries"]["1"]["type"] = "BOLL";
+    EXPECT_NE(join(validator.validate(entry)), "");
+}
+
 TEST(YamlSchema, YamlScalarsResolveLikeTheLanguageServer) {
     const json j = yaml_to_json("{a: 0x10, b: '0x10', c: 1.5, d: true, e: ~, f: pad8, g: -3}");
     EXPECT_EQ(j["a"], 16);

@@ -4,6 +4,7 @@
 
 #include "check/areas.hpp"
 #include "check/rule_cache.hpp"
+#include "esi/text_distance.hpp"
 
 namespace esi {
 
@@ -41,6 +42,14 @@ const Rule* find_rule(std::string_view id) {
     const auto rules = all_rules();
     const auto it = std::lower_bound(rules.begin(), rules.end(), id, [](const Rule& r, std::string_view key) { return r.id < key; });
     return it != rules.end() && it->id == id ? &*it : nullptr;
+}
+
+std::string_view nearest_rule_id(std::string_view id) {
+    std::vector<std::string_view> ids;
+    for (const Rule& r : all_rules()) ids.push_back(r.id);
+    const std::string nearest = closest_match(id, ids);
+    const Rule* rule = nearest.empty() ? nullptr : find_rule(nearest);
+    return rule ? rule->id : std::string_view();  // the catalogue's own id: it outlives the call
 }
 
 RuleContext::RuleContext(const EsiDocument& document, const Rule& rule, Severity severity, const EffectiveConfig& config,

@@ -447,13 +447,21 @@ DiffResult diff_documents(const EsiDocument& old_document, const EsiDocument& ne
 }
 
 FileDiff diff_files(const std::filesystem::path& old_path, const std::filesystem::path& new_path, const DiffOptions& options) {
+    return diff_sources({old_path, std::nullopt}, {new_path, std::nullopt}, options);
+}
+
+FileDiff diff_sources(DiffSource old_source, DiffSource new_source, const DiffOptions& options) {
     FileDiff out;
-    out.old_path = old_path.string();
-    out.new_path = new_path.string();
+    out.old_path = old_source.path.string();
+    out.new_path = new_source.path.string();
     ReadOptions read_options;
     read_options.keep_source = false;
-    ReadResult a = read_esi_file(old_path, read_options);
-    ReadResult b = read_esi_file(new_path, read_options);
+    const auto read = [&](DiffSource& source) {
+        return source.bytes ? read_esi_owned(std::move(*source.bytes), source.path.string(), read_options)
+                            : read_esi_file(source.path, read_options);
+    };
+    ReadResult a = read(old_source);
+    ReadResult b = read(new_source);
     bool ok = true;
     for (ReadResult* r : {&a, &b}) {
         const bool unusable = !r->document || r->document->kind == DocumentKind::unknown;

@@ -13,6 +13,7 @@
 #include "io/created_directories.hpp"
 #include "io/directory_lock.hpp"
 #include "io/leftover_registry.hpp"
+#include "io/unchanged_file.hpp"
 
 namespace esi {
 
@@ -156,6 +157,7 @@ bool commit(const std::filesystem::path& target, Staged& staged, std::string& er
 Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
     Diagnostics diagnostics;
     std::vector<Staged> staged(files.size());
+    std::vector<bool> unchanged(files.size(), false);  // already holds its bytes: left alone
     CreatedDirectories created;  // removed again when the set cannot be written
     auto discard_all = [&] {
         for (auto& s : staged) discard(s);
@@ -169,6 +171,10 @@ Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
         if (std::filesystem::is_directory(file.path, ec)) {
             diagnostics.emplace(Severity::error, "io-error", "cannot write: is a directory", file.path.string(), {});
             break;
+        }
+        if (io_detail::holds_exactly(file.path, file.content)) {
+            unchanged[i] = true;
+            continue;
         }
         if (file.path.has_parent_path() && !created.create(file.path.parent_path(), diagnostics)) break;
         std::string error;
@@ -184,6 +190,7 @@ Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
     // Every file is complete on disk; now move them into place.
     std::set<std::filesystem::path> directories;
     for (std::size_t i = 0; i < files.size(); ++i) {
+        if (unchanged[i]) continue;
         std::string error;
         if (!commit(files[i].path, staged[i], error)) {
             diagnostics.emplace(Severity::error, "io-error", "cannot replace file: " + error, files[i].path.string(), {});

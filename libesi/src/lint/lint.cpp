@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "esi/check/run.hpp"
+#include "lint/directory_walk.hpp"
 #include "lint/file_queue.hpp"
 #include "esi/lint/suppression.hpp"
 #include "esi/lint/xsd.hpp"
@@ -74,21 +75,6 @@ FileReport lint_read_result(ReadResult read, const std::string& path, const Effe
     return report;
 }
 
-void collect_xml_files(const std::filesystem::path& dir, std::vector<std::filesystem::path>& out) {
-    std::vector<std::filesystem::path> found;
-    std::error_code ec;
-    for (auto it = std::filesystem::recursive_directory_iterator(dir, std::filesystem::directory_options::skip_permission_denied, ec);
-         it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
-        if (ec) break;
-        const auto& entry = *it;
-        std::string extension = entry.path().extension().string();
-        std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
-        if (extension == ".xml" && entry.is_regular_file(ec)) found.push_back(entry.path());
-    }
-    std::sort(found.begin(), found.end());
-    out.insert(out.end(), found.begin(), found.end());
-}
-
 }  // namespace
 
 FileReport lint_bytes(std::string_view bytes, const std::string& path, const EffectiveConfig& config,
@@ -106,7 +92,7 @@ std::vector<std::filesystem::path> expand_inputs(const std::vector<std::filesyst
     std::vector<std::filesystem::path> files;
     for (const auto& input : inputs) {
         std::error_code ec;
-        if (std::filesystem::is_directory(input, ec)) collect_xml_files(input, files);
+        if (std::filesystem::is_directory(input, ec)) lint_detail::collect_xml_files(input, files, diagnostics);
         else if (std::filesystem::exists(input, ec)) files.push_back(input);
         else diagnostics.emplace(Severity::error, "io-error", "no such file or directory", input.string(), {});
     }

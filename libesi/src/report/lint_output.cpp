@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cctype>
 #include <map>
 
 #include <nlohmann/json.hpp>
@@ -84,25 +83,6 @@ std::string summary_line(const LintReport& report) {
                        plural(report.files.size(), "file"));
 }
 
-std::string_view sarif_level(Severity s) {
-    switch (s) {
-        case Severity::error: return "error";
-        case Severity::warning: return "warning";
-        case Severity::info: return "note";
-    }
-    return "warning";
-}
-
-// A relative or absolute path as a URI reference (RFC 3986): percent-encode what is not unreserved.
-std::string to_uri(const std::string& path) {
-    std::string out;
-    for (unsigned char c : path) {
-        if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') out.push_back(static_cast<char>(c));
-        else out += fmt::format("%{:02X}", c);
-    }
-    return out;
-}
-
 std::string github_escape_data(std::string_view s) {
     std::string out;
     for (char c : s) {
@@ -169,54 +149,6 @@ std::string render_json(const LintReport& report) {
                         {"errors", report.count(Severity::error)},
                         {"warnings", report.count(Severity::warning)},
                         {"infos", report.count(Severity::info)}}}};
-    return root.dump(2, ' ', false, nlohmann::detail::error_handler_t::replace) + "\n";
-}
-
-std::string render_sarif(const LintReport& report, std::string_view tool_version) {
-    ordered_json rules = ordered_json::array();
-    std::map<std::string, std::size_t, std::less<>> rule_index;
-    for (const Rule& r : all_rules()) {
-        rule_index.emplace(std::string(r.id), rules.size());
-        rules.push_back({{"id", r.id},
-                         {"shortDescription", {{"text", r.summary}}},
-                         {"fullDescription", {{"text", r.rationale}}},
-                         {"defaultConfiguration", {{"level", sarif_level(r.default_severity)}}},
-                         {"help", {{"text", fmt::format("{}\n\nBad:\n{}\n\nGood:\n{}", r.rationale, r.bad_example, r.good_example)}}}});
-    }
-    ordered_json results = ordered_json::array();
-    for_each_diagnostic(report, [&](const Diagnostic& d, const std::map<std::uint32_t, std::string>&) {
-        ordered_json physical{{"artifactLocation", {{"uri", to_uri(d.path)}}}};
-        if (d.pos.known()) {
-            physical["region"] = {{"startLine", d.pos.line}, {"startColumn", std::max<std::uint32_t>(d.pos.column, 1)}};
-        }
-        ordered_json result{{"ruleId", d.rule}};
-        if (auto it = rule_index.find(d.rule); it != rule_index.end()) result["ruleIndex"] = it->second;
-        result["level"] = sarif_level(d.severity);
-        result["message"] = {{"text", d.message}};
-        result["locations"] = ordered_json::array({{{"physicalLocation", std::move(physical)}}});
-        if (!d.notes.empty()) {
-            ordered_json related = ordered_json::array();
-            int id = 0;
-            for (const auto& n : d.notes) {
-                ordered_json loc{{"artifactLocation", {{"uri", to_uri(n.path)}}}};
-                if (n.pos.known()) loc["region"] = {{"startLine", n.pos.line}, {"startColumn", std::max<std::uint32_t>(n.pos.column, 1)}};
-                related.push_back({{"id", id++}, {"physicalLocation", std::move(loc)}, {"message", {{"text", n.message}}}});
-            }
-            result["relatedLocations"] = std::move(related);
-        }
-        results.push_back(std::move(result));
-    });
-    ordered_json root{
-        {"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
-        {"version", "2.1.0"},
-        {"runs", ordered_json::array({{{"tool",
-                                        {{"driver",
-                                          {{"name", "esi-lint"},
-                                           {"version", tool_version},
-                                           {"informationUri", "https://github.com/libesi/libesi"},
-                                           {"rules", std::move(rules)}}}}},
-                                       {"columnKind", "unicodeCodePoints"},
-                                       {"results", std::move(results)}}})}};
     return root.dump(2, ' ', false, nlohmann::detail::error_handler_t::replace) + "\n";
 }
 

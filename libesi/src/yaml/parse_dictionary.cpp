@@ -13,6 +13,7 @@
 #include "esi/model/object_layout.hpp"
 #include "yaml/extras.hpp"
 #include "yaml/source_parser.hpp"
+#include "yaml/type_names.hpp"
 
 namespace esi::yaml {
 
@@ -326,6 +327,10 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
     if (const Node* n = f->find("type")) {
         type = r_.text(*n, "type").value_or("");
         o.type_pos = pos_of(*n);
+        if (const std::string misspelt = misspelt_type_message(type, dictionary); !misspelt.empty()) {
+            r_.error(*n, "yaml-type", misspelt);
+            return;
+        }
     }
     const bool is_array = f->has("array");
     const bool has_entries = f->has("entries");
@@ -410,6 +415,7 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
         } else {
             std::vector<RecordEntry> records;
             std::set<std::uint32_t> subs;
+            bool misspelt_type = false;  // reported at the entry; the record is not built
             for (auto it = entries.begin(); it != entries.end(); ++it) {
                 const auto sub = r_.integer<std::uint32_t>(it->first, "sub-index", 0, 255);
                 const auto ef = r_.mapping(it->second, Context::object_entry, "an entry");
@@ -420,6 +426,11 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
                 e.item.pos = ef->pos();
                 if (r_.require(*ef, "name", "an entry")) e.item.name = r_.text(*ef->find("name"), "name").value_or("");
                 if (r_.require(*ef, "type", "an entry")) e.item.type = r_.text(*ef->find("type"), "type").value_or("");
+                if (const std::string misspelt = misspelt_type_message(e.item.type, dictionary); !misspelt.empty()) {
+                    r_.error(*ef->find("type"), "yaml-type", misspelt);
+                    misspelt_type = true;
+                    continue;
+                }
                 e.item.comments = names_of(*ef, "comment");
                 if (const Node* b = ef->find("bit_size")) e.item.bit_size = r_.integer<std::uint64_t>(*b, "bit_size", 1, 0xFFFF).value_or(0);
                 if (const Node* b = ef->find("bit_offset")) {
@@ -431,6 +442,7 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
                 extras(*ef, "xml", e.item.extras);
                 records.push_back(std::move(e));
             }
+            if (misspelt_type) return;
             if (records.empty()) {
                 r_.error(entries, "yaml-value", "a RECORD needs at least one entry");
                 return;

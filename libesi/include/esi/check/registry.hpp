@@ -13,5 +13,7 @@ namespace esi {
 // Every rule, sorted by id.
 [[nodiscard]] std::span<const Rule> all_rules();
 [[nodiscard]] const Rule* find_rule(std::string_view id);
+// The rule id nearest to a misspelt one ("did you mean …?"); empty when none is close.
+[[nodiscard]] std::string_view nearest_rule_id(std::string_view id);
 
 }  // namespace esi

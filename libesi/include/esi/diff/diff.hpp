@@ -61,4 +61,14 @@ struct FileDiff {
 [[nodiscard]] FileDiff diff_files(const std::filesystem::path& old_path, const std::filesystem::path& new_path,
                                   const DiffOptions& options = {});
 
+// One side of a comparison: a file, or bytes already read (standard input, `git show REV:dev.xml`
+// piped in) that diagnostics name by `path`.
+struct DiffSource {
+    std::filesystem::path path;
+    std::optional<std::string> bytes;  // set: read these instead of the file at `path`
+};
+
+// diff_files for sources that may be in memory.
+[[nodiscard]] FileDiff diff_sources(DiffSource old_source, DiffSource new_source, const DiffOptions& options = {});
+
 }  // namespace esi

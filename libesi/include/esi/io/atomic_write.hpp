@@ -1,7 +1,9 @@
 #pragma once
 // Output files are written whole or not at all: each goes to a temporary file beside its
 // target and is renamed into place only when every file of the set has been written. A failed
-// or interrupted run leaves the targets as they were.
+// or interrupted run leaves the targets as they were. A target that already holds exactly the
+// bytes to write is left alone, so its modification time stays and a build that depends on it
+// does not rebuild.
 
 #include <filesystem>
 #include <string>

@@ -1,6 +1,7 @@
 #pragma once
 // Renders a lint report as text (file:line:col: severity: message [rule] with the source line),
-// JSON, SARIF 2.1.0 or GitHub workflow annotations. Pure functions: the CLI prints the string.
+// JSON or GitHub workflow annotations (SARIF: esi/report/sarif.hpp). Pure functions: the CLI
+// prints the string.
 
 #include <string>
 
@@ -16,7 +17,6 @@ struct TextOutputOptions {
 [[nodiscard]] std::string render_text(const LintReport& report, const TextOutputOptions& options = {});
 // {"diagnostics":[{path,line,column,severity,rule,message,notes?}],"summary":{files,errors,warnings,infos}}
 [[nodiscard]] std::string render_json(const LintReport& report);
-[[nodiscard]] std::string render_sarif(const LintReport& report, std::string_view tool_version);
 [[nodiscard]] std::string render_github(const LintReport& report);
 
 // The rule catalogue: text (id, severity, summary) or JSON (every field).
