@@ -145,6 +145,4 @@ std::uint32_t decode_utf8(const char* p, const char* end, int& length);
 // "U+0000" .. "U+10FFFF", for messages.
 std::string code_point_name(std::uint32_t cp);
 
-void append_utf8(std::string& out, std::uint32_t cp);
-
 }  // namespace esi::xml_well_formed
