@@ -33,4 +33,7 @@ struct DecodedText {
 // True when text is valid UTF-8 (no overlongs, no surrogates, nothing above U+10FFFF).
 [[nodiscard]] bool is_valid_utf8(std::string_view text, std::size_t* first_bad = nullptr);
 
+// Appends the code point `cp` (at most U+10FFFF) to `out` as UTF-8.
+void append_utf8(std::string& out, char32_t cp);
+
 }  // namespace esi

@@ -2,6 +2,10 @@
 // Names, duplicate identities and the identity object 0x1018. A master finds a device's
 // description by (Vendor Id, ProductCode, RevisionNo) read from the SII EEPROM (words 0x08–0x0D)
 // and the conformance tool compares all three with 0x1018 (CTT TF-1300 2-1..2-3, 4-1).
+//
+// The file stays whole although it is about 500 lines: it is the identity family's catalogue, each
+// rule's Rule constant right below its check (areas.hpp), and the "missing" rules share the
+// helpers below that tell an absent attribute from a malformed one (one fault, one finding).
 #include <optional>
 #include <string>
 #include <unordered_map>

@@ -18,10 +18,6 @@ std::string_view to_string(SourceEncoding encoding) {
     return "UTF-8";
 }
 
-namespace {
-
-constexpr std::string_view replacement = "\xEF\xBF\xBD";
-
 void append_utf8(std::string& out, char32_t cp) {
     if (cp < 0x80) {
         out.push_back(static_cast<char>(cp));
@@ -39,6 +35,10 @@ void append_utf8(std::string& out, char32_t cp) {
         out.push_back(static_cast<char>(0x80 | (cp & 0x3F)));
     }
 }
+
+namespace {
+
+constexpr std::string_view replacement = "\xEF\xBF\xBD";
 
 // Windows-1252 bytes 0x80..0x9F; 0 marks the five undefined positions.
 constexpr char16_t cp1252_high[32] = {

@@ -1,9 +1,9 @@
 #pragma once
 // Model -> elements: the pieces of the ESI writer shared by its files (writer.cpp for the roots,
-// vendor and groups; writer_device.cpp for devices, modules and slots; writer_dictionary.cpp for
-// profiles and object dictionaries). Every function writes one element in ETG.2000 schema 1.17
-// order: typed attributes in a fixed order, then unknown ones; typed children in schema order
-// with the unknown ones placed by ChildPlacer.
+// vendor and groups; writer_device.cpp for devices, modules and slots; writer_mailbox.cpp for
+// mailboxes and InitCmds; writer_dictionary.cpp for profiles and object dictionaries). Every
+// function writes one element in ETG.2000 schema 1.17 order: typed attributes in a fixed order,
+// then unknown ones; typed children in schema order with the unknown ones placed by ChildPlacer.
 
 #include <optional>
 #include <string_view>
@@ -56,6 +56,19 @@ void leaf_decimal(XmlEmitter& out, std::string_view name, T value) {
     else if constexpr (std::is_signed_v<T>) out.leaf(name, NumberText::decimal(static_cast<std::int64_t>(value)).view());
     else out.leaf(name, NumberText::decimal(static_cast<std::uint64_t>(value)).view());
 }
+// Elements with simple content (Type, Sm, Fmmu, Su, FoE, VoE …): the schema places no children.
+inline constexpr ChildOrder no_children{};
+
+// Index elements of PDOs, entries and InitCmds: #x value with the slot-dependency flags.
+inline void write_index(XmlEmitter& out, std::uint32_t index, const std::optional<bool>& depend_on_slot,
+                        const std::optional<bool>& depend_on_slot_group) {
+    out.begin("Index");
+    put_bool(out, "DependOnSlot", depend_on_slot);
+    put_bool(out, "DependOnSlotGroup", depend_on_slot_group);
+    out.text(index_hex(index).view());
+    out.end();
+}
+
 // xs:hexBinary, with the hex digits in upper case (anything that is not a hex digit is kept as
 // it was, so that a broken value stays visibly broken).
 void text_hex_data(XmlEmitter& out, const HexData& data);
@@ -68,6 +81,9 @@ void write_images(XmlEmitter& out, ChildPlacer& children, const Images& images);
 // ---- elements (writer_device.cpp) ---------------------------------------------------------
 void write_device(XmlEmitter& out, const Device& device);
 void write_module(XmlEmitter& out, const Module& module);
+
+// ---- elements (writer_mailbox.cpp) --------------------------------------------------------
+void write_mailbox(XmlEmitter& out, const Mailbox& mailbox);
 
 // ---- elements (writer_dictionary.cpp) -----------------------------------------------------
 void write_profile(XmlEmitter& out, const Profile& profile);

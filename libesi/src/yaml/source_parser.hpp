@@ -1,6 +1,7 @@
 #pragma once
 // YAML device source -> model (before derivation). One class, split over parse_*.cpp by part of
-// the format: common pieces, the object dictionary, devices, modules and slots. The format is
+// the format: common pieces, PDOs, the object dictionary and its DataTypes, devices, modules and
+// slots. The format is
 // documented in docs/yaml-format.md; the keys of every mapping are in format_keys.cpp.
 
 #include <map>
@@ -13,6 +14,7 @@
 #include "esi/derive/derive.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/model/ethercat_info.hpp"
+#include "esi/model/typed_value.hpp"
 #include "esi/source_text.hpp"
 #include "esi/yaml/reader.hpp"
 
@@ -68,15 +70,15 @@ private:
     void init_cmds(const Node& node, MailboxProtocol protocol, const ObjectNames& names, std::vector<InitCmd>& out,
                    std::vector<InitCmdValue>* values);
     std::optional<Mailbox> mailbox(const Node& node, Context context, MailboxLayout* layout, const ObjectNames& names);
+
+    // ---- parse_pdos.cpp ----------------------------------------------------------------------
     std::vector<Pdo> pdos(const Node& node, PdoDirection direction, const ObjectNames& names, std::vector<bool>* assign);
     std::optional<PdoEntry> pdo_entry(const Node& node, const ObjectNames& names);
 
     // ---- parse_dictionary.cpp ----------------------------------------------------------------
     // Reads data_types and objects into `dictionary`; returns the names of the objects.
     ObjectNames dictionary(const Fields& f, Dictionary& dictionary);
-    std::optional<DataType> data_type(const Node& node);
     std::optional<ObjectSubItemInfo> info_sub_item(const Node& node);
-    bool enum_texts(const Node& value, EnumValue& ev);
     void object(const Node& key, const Node& value, Dictionary& dictionary,
                 std::map<std::uint32_t, std::pair<SourcePos, std::string>>& seen);
     std::optional<ObjectFlags> flags(const Fields& f);
@@ -84,6 +86,10 @@ private:
                                    std::string_view what);
     std::optional<Number> typed_integer(const Node& node, const Dictionary& dictionary, const std::string& type_name,
                                         std::string_view what);
+
+    // ---- parse_data_types.cpp ----------------------------------------------------------------
+    std::optional<DataType> data_type(const Node& node);
+    bool enum_texts(const Node& value, EnumValue& ev);
 
     // ---- parse_device.cpp --------------------------------------------------------------------
     std::optional<ParsedDevice> device(const Node& node, std::optional<std::uint32_t> vendor_id,
@@ -114,5 +120,12 @@ private:
 
 // Objects a device or module declares, indexed by primary name (ambiguous names are marked).
 ObjectNames index_object_names(const Dictionary& dictionary);
+
+// An index as messages spell it: 0x6040 (parse_common.cpp).
+std::string hex4(std::uint32_t v);
+
+// What a value of type `type_name` in `dictionary` is: basic type, size, enumeration
+// (parse_dictionary.cpp).
+ValueType value_type_of(const Dictionary& dictionary, const std::string& type_name);
 
 }  // namespace esi::yaml
