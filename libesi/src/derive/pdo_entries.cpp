@@ -1,6 +1,6 @@
 // PDO entries take BitLen, DataType and Name from the object they map, so that the three cannot
-// disagree with the dictionary (prior-art §4.3 S17: a signed object described as UDINT "reaches
-// OP without complaint"). An entry that names a missing object or sub-index, or an object that
+// disagree with the dictionary (a signed object described as UDINT reaches OP without
+// complaint and the master reads the wrong sign). An entry that names a missing object or sub-index, or an object that
 // is not PDO-mappable in the entry's direction (SDO abort 0604 0041, STÖBER §7.2.3), is an error
 // at the entry. Explicit values are kept, but one that contradicts the object is an error too.
 

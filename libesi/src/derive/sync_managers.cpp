@@ -1,6 +1,6 @@
 // SyncManagers, the default PDO assignment and FMMUs.
 //
-// The canonical layout (SOES tutorial; SOEM #247; prior-art §4.3 S5/S6):
+// The canonical layout (SOES tutorial; SOEM #247):
 //   SM0 MBoxOut  #x1000, ControlByte #x26 (mailbox, write, ECAT+PDI IRQ)
 //   SM1 MBoxIn   after SM0, ControlByte #x22 (mailbox, read)
 //   SM2 Outputs  after the mailboxes, ControlByte #x64 (buffered, write, watchdog trigger)

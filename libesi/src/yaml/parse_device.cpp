@@ -285,7 +285,7 @@ std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional
                  group_count == 0 ? "a device needs 'group' (its Group type)"
                                   : "a device needs 'group' when several groups are declared");
     }
-    // Two MII ports is the usual device; an E-Bus terminal writes "KK" (prior-art §4.3 S13).
+    // Two MII ports is the usual device; an E-Bus terminal writes "KK".
     if (const Node* n = f->find("physics")) {
         d.physics = r_.text(*n, "physics").value_or("");
         for (char c : d.physics)

@@ -1,7 +1,8 @@
 // The object dictionary: `data_types:` (explicit DataType elements) and `objects:` keyed by
 // index. An object is a VAR (type), an ARRAY (type + array: n) or a RECORD (entries: keyed by
 // sub-index); the object code follows from which keys are written, never from the shape of the
-// values (prior-art §4.3 S24: "ARRAY/RECORD inferred from sub-entry shape" broke a generator).
+// values: a generator that inferred ARRAY or RECORD from the shape of the sub-entries guessed wrong
+// where both readings fit.
 // Defaults, minima and maxima are typed by the object: an integer type takes a number (or an
 // enumeration text), REAL/LREAL a number stored as DefaultData, STRING(n) a text. The DataTypes
 // are read in parse_data_types.cpp.

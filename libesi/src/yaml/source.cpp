@@ -118,7 +118,7 @@ std::optional<EtherCATInfo> SourceParser::parse(const Node& root, std::vector<Pa
                 if (!d) continue;
                 const auto& t = d->device.type;
                 if (t.product_code && t.revision_no) {
-                    // One (product code, revision) pair is one device (prior-art §4.3 S3).
+                    // One (product code, revision) pair is one device.
                     if (const auto [it, inserted] = identities.emplace(std::pair{*t.product_code, *t.revision_no}, d->device.pos);
                         !inserted) {
                         Diagnostic& diag = r_.error(d->device.pos, "yaml-duplicate",

@@ -1,6 +1,5 @@
 #pragma once
-// Device -> SII image (ETG.1000.6 / ETG.2010 as summarised in
-// shared/domain/prior-art-and-etg-facts.md §6; every choice where public tools disagree is in
+// Device -> SII image (ETG.1000.6, ETG.2010; every choice where public tools disagree is in
 // docs/sii.md). What does not fit is a diagnostic, never a silent truncation: more than 255
 // strings, a string over 255 bytes, more than 255 entries in a PDO, a value too wide for its
 // field. An image larger than Eeprom/ByteSize leaves out optional content in a fixed order, with

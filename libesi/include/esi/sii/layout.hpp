@@ -1,7 +1,7 @@
 #pragma once
 // The SII EEPROM layout: word addresses of the fixed header, category codes and the sizes of
 // the fixed-size category records. Sources: ETG.1000.6 Tables 16-23 and ETG.2010 Tables 2, 4,
-// 12, 14 as summarised in shared/domain/prior-art-and-etg-facts.md §6; the Beckhoff ESC data
+// 12, 14; the Beckhoff ESC data
 // sheet Section I, Table 37/38. Words are little-endian; "offset" always means a byte offset.
 
 #include <cstddef>
