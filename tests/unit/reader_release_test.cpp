@@ -122,6 +122,22 @@ TEST(ReaderRelease, ReadsBigDevicesTheSameAsWithoutReleasing) {
     EXPECT_EQ(info.descriptions_extras.elements[0].after, "Modules");
 }
 
+// pugixml frees a subtree recursively; a Device nesting elements a million deep must not
+// overflow the stack when it is released.
+TEST(ReaderRelease, ReleasesADeeplyNestedDeviceWithoutOverflowingTheStack) {
+    const int depth = 1'000'000;
+    std::string xml = "<?xml version=\"1.0\"?>\n<EtherCATInfo><Vendor><Id>1</Id><Name>V</Name></Vendor><Descriptions><Devices>"
+                      "<Device><Type ProductCode=\"1\" RevisionNo=\"1\">D</Type><Name>D</Name><Deep>";
+    for (int i = 0; i < depth; ++i) xml += "<a>";
+    for (int i = 0; i < depth; ++i) xml += "</a>";
+    xml += "</Deep></Device><Device><Type ProductCode=\"2\" RevisionNo=\"1\">E</Type><Name>E</Name></Device>"
+           "</Devices></Descriptions></EtherCATInfo>\n";
+    const esi::ReadResult released = esi::read_esi(xml, "deep.xml", releasing(true));
+    ASSERT_TRUE(released.document);
+    ASSERT_EQ(released.document->infos.at(0).devices.size(), 2u);
+    EXPECT_EQ(released.document->infos.at(0).devices[1].names.at(0).text, "E");
+}
+
 TEST(ReaderRelease, ReadsTheCorpusTheSameAsWithoutReleasing) {
     ESI_REQUIRE_CORPUS();
     std::size_t files = 0;

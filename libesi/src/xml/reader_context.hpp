@@ -227,6 +227,22 @@ private:
         }
     }
 
+    // pugixml frees a subtree recursively, a stack frame per level, and a hostile file nests
+    // elements a million deep: the subtree is taken apart from its leaves up instead, each
+    // remove_child freeing a node that has no children.
+    static void free_subtree(pugi::xml_node parent, const pugi::xml_node top) {
+        for (pugi::xml_node n = top; n != top || n.first_child();) {
+            if (const pugi::xml_node c = n.first_child()) {
+                n = c;
+                continue;
+            }
+            pugi::xml_node up = n.parent();
+            up.remove_child(n);
+            n = up;
+        }
+        parent.remove_child(top);
+    }
+
     // Frees an element that has been read into the model (in a document of at least
     // ReadOptions::release_elements_from_bytes): its DOM (a big catalogue's DOM is
     // about twice the file) and the pages of the parse buffer from its start tag to the next
@@ -241,7 +257,7 @@ private:
         if (!releasing_) return;
         const pugi::xml_node next = child.next_sibling();
         const std::size_t begin = offset_of(child.name());
-        parent.remove_child(child);
+        free_subtree(parent, child);
         if (!next || begin == npos) return;
         const char* next_text = next.name()[0] != '\0' ? next.name() : next.value();
         if (const std::size_t end = offset_of(next_text); end != npos) parse_buffer_.give_back(begin, end);
