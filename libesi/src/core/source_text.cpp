@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstring>
+#include <limits>
 
 namespace esi {
 
@@ -47,19 +48,19 @@ std::size_t count_newlines(std::string_view text) {
 
 SourceText::SourceText(std::string path, std::string utf8) : path_(std::move(path)), text_(std::move(utf8)) {}
 
-const std::vector<std::size_t>& SourceText::line_starts() const {
+const std::vector<SourceText::LineStart>& SourceText::line_starts() const {
     std::call_once(index_once_, [this] {
         // Vendor files have lines of 25 to 40 bytes; the index is trimmed to size afterwards, as
         // it lives as long as the document.
         line_starts_.reserve(text_.size() / 24 + 1);
         line_starts_.push_back(0);
         const char* begin = text_.data();
-        const char* end = begin + text_.size();
+        const char* end = begin + std::min<std::size_t>(text_.size(), std::numeric_limits<LineStart>::max());
         for (const char* p = begin; p < end;) {
             const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
             if (!nl) break;
             p = static_cast<const char*>(nl) + 1;
-            line_starts_.push_back(static_cast<std::size_t>(p - begin));
+            line_starts_.push_back(static_cast<LineStart>(p - begin));
         }
         line_starts_.shrink_to_fit();
     });

@@ -129,12 +129,16 @@ void Reader::read_info(EtherCATInfo& info, const pugi::xml_node n) {
                 } else if (is(dn, "Devices")) {
                     reserve_for(info.devices, d, "Device");
                     for_children(d, [&](const pugi::xml_node dev, std::string_view devn, std::string_view) {
-                        if (is(devn, "Device")) read_device(info.devices.emplace_back(), dev);
+                        if (!is(devn, "Device")) return;
+                        read_device(info.devices.emplace_back(), dev);
+                        release(d, dev);
                     });
                 } else if (is(dn, "Modules")) {
                     info.has_modules = true;
                     for_children(d, [&](const pugi::xml_node m, std::string_view mn, std::string_view) {
-                        if (is(mn, "Module")) read_module(info.modules.emplace_back(), m);
+                        if (!is(mn, "Module")) return;
+                        read_module(info.modules.emplace_back(), m);
+                        release(d, m);
                     });
                 } else {
                     keep(info.descriptions_extras, d, dprev);
@@ -143,7 +147,9 @@ void Reader::read_info(EtherCATInfo& info, const pugi::xml_node n) {
         } else if (is(name, "Modules")) {  // EtherCATModule root
             info.has_modules = true;
             for_children(c, [&](const pugi::xml_node m, std::string_view mn, std::string_view) {
-                if (is(mn, "Module")) read_module(info.modules.emplace_back(), m);
+                if (!is(mn, "Module")) return;
+                read_module(info.modules.emplace_back(), m);
+                release(c, m);
             });
         } else {
             keep(info.extras, c, previous);
@@ -277,8 +283,10 @@ ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOpti
     }
 
     // pugixml parses a copy in place (as load_buffer would copy it itself): the SourceText stays
-    // as written, for quoting lines and finding suppressions.
-    std::string buffer = source->text();
+    // as written, for quoting lines and finding suppressions. In a big document the reader gives
+    // the copy's pages back as it goes (ReadOptions::release_elements_from_bytes).
+    const bool releasing = source->text().size() >= options.release_elements_from_bytes;
+    xml_reader::ParseBuffer buffer(source->text(), releasing);
     pugi::xml_document xml;
     // No comments or processing instructions in the tree (for_children relies on it); text before
     // an element's first child is stored in the element itself. A DOCTYPE is kept as a node (pugixml
@@ -317,7 +325,7 @@ ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOpti
         return result;
     }
     report_xinclude(*source, xml, buffer.data(), result.diagnostics);
-    Reader reader(*source, buffer, result.diagnostics, options);
+    Reader reader(*source, buffer, releasing, result.diagnostics, options);
     EsiDocument doc = reader.read_document(root);
     doc.path = path;
     doc.encoding = decoded.encoding;

@@ -20,6 +20,7 @@
 #include "esi/number.hpp"
 #include "esi/source_text.hpp"
 #include "esi/xml/reader.hpp"
+#include "xml/parse_buffer.hpp"
 
 namespace esi::xml_reader {
 
@@ -34,9 +35,11 @@ template <std::size_t N>
 
 class Reader {
 public:
-    // `buffer` is the copy of the source text pugixml parsed in place.
-    Reader(const SourceText& source, std::string_view buffer, Diagnostics& diagnostics, const ReadOptions& options)
-        : source_(source), buffer_(buffer), cursor_(source), diagnostics_(diagnostics), options_(options) {}
+    // `buffer` is the copy of the source text pugixml parsed in place. With `releasing`, each
+    // element read is released (see release()).
+    Reader(const SourceText& source, ParseBuffer& buffer, bool releasing, Diagnostics& diagnostics, const ReadOptions& options)
+        : source_(source), parse_buffer_(buffer), buffer_(buffer.view()), cursor_(source), diagnostics_(diagnostics),
+          options_(options), releasing_(releasing) {}
 
     EsiDocument read_document(const pugi::xml_node root);
 
@@ -46,11 +49,17 @@ private:
     // buffer at its offset in the text; one name() call finds it, where offset_debug() and
     // type() cost two calls and ~45 instructions for every element read.
     SourcePos pos_of(const pugi::xml_node element) {
-        const auto name = reinterpret_cast<std::uintptr_t>(element.name());
-        const auto begin = reinterpret_cast<std::uintptr_t>(buffer_.data());
-        if (name < begin || name >= begin + buffer_.size()) return {};  // not from the parse
-        const std::size_t offset = name - begin;
+        const std::size_t offset = offset_of(element.name());
+        if (offset == npos) return {};  // not from the parse
         return cursor_.position_of(offset > 0 ? offset - 1 : 0);
+    }
+    static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+    // The offset in the parse buffer (and the text) of a name or value parsed in place; npos
+    // for a string that is not in the buffer.
+    std::size_t offset_of(const char* text) const {
+        const auto at = reinterpret_cast<std::uintptr_t>(text);
+        const auto begin = reinterpret_cast<std::uintptr_t>(buffer_.data());
+        return at >= begin && at < begin + buffer_.size() ? at - begin : npos;
     }
 
     void report(Severity severity, std::string rule, std::string message, SourcePos pos) {
@@ -205,15 +214,53 @@ private:
     // Element children are the ones with a name: with the parse options used, an element's
     // other children are character data (pcdata, cdata), which has none; comments, processing
     // instructions and declarations are not parsed. So the name tells without a type() call.
+    // The next sibling is taken before `f` runs, so `f` may release the child it was given.
     template <class F>
     void for_children(const pugi::xml_node n, F&& f) {
         std::string_view previous;
-        for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
+        for (pugi::xml_node c = n.first_child(), next; c; c = next) {
+            next = c.next_sibling();
             const std::string_view name = c.name();
             if (name.empty()) continue;
             f(c, name, previous);
             previous = name;
         }
+    }
+
+    // pugixml frees a subtree recursively, a stack frame per level, and a hostile file nests
+    // elements a million deep: the subtree is taken apart from its leaves up instead, each
+    // remove_child freeing a node that has no children.
+    static void free_subtree(pugi::xml_node parent, const pugi::xml_node top) {
+        for (pugi::xml_node n = top; n != top || n.first_child();) {
+            if (const pugi::xml_node c = n.first_child()) {
+                n = c;
+                continue;
+            }
+            pugi::xml_node up = n.parent();
+            up.remove_child(n);
+            n = up;
+        }
+        parent.remove_child(top);
+    }
+
+    // Frees an element that has been read into the model (in a document of at least
+    // ReadOptions::release_elements_from_bytes): its DOM (a big catalogue's DOM is
+    // about twice the file) and the pages of the parse buffer from its start tag to the next
+    // sibling. Releasing each Device, Module, Object and DataType as soon as it is read lets the
+    // model allocated next reuse that memory (pugixml returns a page of nodes when all of them
+    // are freed), so that the DOM, the parse buffer and the model never peak together.
+    // Nothing refers to the element afterwards: positions are byte offsets, kept text is copied,
+    // and the well-formedness and XInclude checks ran before. What lies between it and its next
+    // sibling is at most character data, which no loop that releases reads. Its name is gone
+    // with the pages: the loops that release ignore the `previous` name for_children hands on.
+    void release(pugi::xml_node parent, const pugi::xml_node child) {
+        if (!releasing_) return;
+        const pugi::xml_node next = child.next_sibling();
+        const std::size_t begin = offset_of(child.name());
+        free_subtree(parent, child);
+        if (!next || begin == npos) return;
+        const char* next_text = next.name()[0] != '\0' ? next.name() : next.value();
+        if (const std::size_t end = offset_of(next_text); end != npos) parse_buffer_.give_back(begin, end);
     }
 
     // Reserves room for the children named `name` about to be read into `items`: large model
@@ -267,10 +314,12 @@ private:
     void read_slot(Slot& out, const pugi::xml_node n);
 
     const SourceText& source_;
+    ParseBuffer& parse_buffer_;
     std::string_view buffer_;
     PositionCursor cursor_;
     Diagnostics& diagnostics_;
     const ReadOptions& options_;
+    const bool releasing_;
     bool depth_reported_ = false;
 };
 

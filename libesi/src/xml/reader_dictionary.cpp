@@ -27,12 +27,16 @@ void Reader::read_dictionary(Dictionary& d, const pugi::xml_node n) {
         if (is(name, "DataTypes")) {
             reserve_for(d.data_types, c, "DataType");
             for_children(c, [&](const pugi::xml_node t, std::string_view tn, std::string_view) {
-                if (is(tn, "DataType")) read_data_type(d.data_types.emplace_back(), t);
+                if (!is(tn, "DataType")) return;
+                read_data_type(d.data_types.emplace_back(), t);
+                release(c, t);
             });
         } else if (is(name, "Objects")) {
             reserve_for(d.objects, c, "Object");
             for_children(c, [&](const pugi::xml_node o, std::string_view on, std::string_view) {
-                if (is(on, "Object")) read_object(d.objects.emplace_back(), o);
+                if (!is(on, "Object")) return;
+                read_object(d.objects.emplace_back(), o);
+                release(c, o);
             });
         } else {
             keep(d.extras, c, previous);

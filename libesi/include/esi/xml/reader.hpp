@@ -20,6 +20,13 @@ struct ReadOptions {
     bool keep_source = true;
     // Nesting depth beyond which unknown elements are not copied (guards against hostile input).
     std::size_t max_verbatim_depth = 256;
+    // From this size of (decoded) text on, the reader frees each Device, Module, Object and
+    // DataType of the parsed XML, with its part of the parse buffer, as soon as it is in the
+    // model, so that the parsed XML and the model do not peak together on a big catalogue
+    // (issue 10, docs/performance.md). Freeing walks the freed nodes once more and maps the
+    // parse buffer on pages of its own, which files whose whole peak is a few tens of MB need not
+    // pay for. The model read is the same either way.
+    std::size_t release_elements_from_bytes = std::size_t{8} << 20;
 };
 
 struct ReadResult {
