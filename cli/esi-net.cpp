@@ -1,5 +1,5 @@
 // esi-net: master-side configuration from ESI files (docs/esi-net.md).
-//   esi-net build NETWORK.yaml -o OUTDIR [--only eni,igh,lcec,map] [--esi PATH...]
+//   esi-net build NETWORK.yaml -o OUTDIR [--only eni,igh,lcec,map,html] [--esi PATH...] [--templates DIR...]
 //   esi-net init --from-igh SLAVES.txt [--esi PATH...] -o NETWORK.yaml
 //   esi-net find [--esi PATH...] VENDOR:PRODUCT[:REVISION] | NAME
 // Exit codes: 0 done; 1 the network has errors (an unknown device, a PDO selection the ESI
@@ -8,12 +8,16 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <fmt/format.h>
 #include <iostream>
 
 #include "cli_common.hpp"
 #include "diagnostic_line.hpp"
+#include "esi/doc/datasheet.hpp"
+#include "esi/doc/process_image_page.hpp"
 #include "esi/io/atomic_write.hpp"
 #include "esi/io/read_file.hpp"
 #include "esi/net/igh_scan.hpp"
@@ -44,7 +48,7 @@ esi::net::IndexOptions index_options(bool no_cache) {
 std::vector<fs::path> paths(const std::vector<std::string>& texts) { return {texts.begin(), texts.end()}; }
 
 int run_build(const std::string& network_path, const std::string& output_dir, const std::string& only,
-              const std::vector<std::string>& esi, bool no_cache) {
+              const std::vector<std::string>& esi, bool no_cache, const std::vector<fs::path>& template_dirs) {
     std::string error;
     const auto kinds = only.empty() ? std::optional<std::vector<esi::net::OutputKind>>(std::vector<esi::net::OutputKind>(
                                           esi::net::all_output_kinds().begin(), esi::net::all_output_kinds().end()))
@@ -65,7 +69,19 @@ int run_build(const std::string& network_path, const std::string& output_dir, co
         std::cerr << "esi-net build: " << network_path << ": nothing written\n";
         return exit_findings;
     }
-    const esi::Diagnostics written = esi::write_files_atomically(esi::net::network_outputs(*built.network, *kinds, output_dir));
+    std::vector<esi::OutputFile> files = esi::net::network_outputs(*built.network, *kinds, output_dir);
+    if (std::find(kinds->begin(), kinds->end(), esi::net::OutputKind::html) != kinds->end()) {
+        esi::doc::ProcessImagePageOptions page_options;
+        page_options.template_dirs = template_dirs;
+        esi::doc::ProcessImagePage page = esi::doc::render_process_image_page(*built.network, output_dir, page_options);
+        print(page.diagnostics);
+        if (page.diagnostics.has_errors()) {
+            std::cerr << "esi-net build: " << network_path << ": nothing written\n";
+            return exit_findings;
+        }
+        std::move(page.files.begin(), page.files.end(), std::back_inserter(files));
+    }
+    const esi::Diagnostics written = esi::write_files_atomically(files);
     print(written);
     return written.has_errors() ? exit_findings : exit_ok;
 }
@@ -134,8 +150,10 @@ int main(int argc, char** argv) {
     CLI::App* build = app.add_subcommand("build", "write the master configuration of a network");
     build->add_option("network", build_network_path, "NETWORK.yaml")->required();
     build->add_option("-o,--output", build_output, "output directory (created when missing)")->required();
-    build->add_option("--only", build_only, "output kinds, comma-separated: eni, igh, lcec, map (default: all)");
+    build->add_option("--only", build_only, "output kinds, comma-separated: eni, igh, lcec, map, html (default: all)");
     build->add_option("--esi", build_esi, "more ESI files or folders to look in (repeatable)");
+    std::vector<std::string> build_templates;
+    build->add_option("--templates", build_templates, "directory searched for the html page's templates before the built-in ones (repeatable)");
 
     std::string scan_path, init_output;
     CLI::App* init = app.add_subcommand("init", "write a NETWORK.yaml from a bus scan");
@@ -149,7 +167,12 @@ int main(int argc, char** argv) {
     find->add_option("--esi", find_esi, "ESI files or folders to look in (repeatable)");
 
     if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
-    if (build->parsed()) return run_build(build_network_path, build_output, build_only, build_esi, no_cache);
+    if (build->parsed()) {
+        std::vector<fs::path> user_dirs;
+        if (!esi::cli::parse_template_dirs("esi-net build", build_templates, user_dirs)) return exit_usage;
+        const std::vector<fs::path> template_dirs = esi::doc::template_search_path(user_dirs, esi::cli::executable_path(argc > 0 ? argv[0] : nullptr));
+        return run_build(build_network_path, build_output, build_only, build_esi, no_cache, template_dirs);
+    }
     if (init->parsed()) return run_init(scan_path, init_output, init_esi, no_cache);
     if (find->parsed()) return run_find(query, find_esi, no_cache);
     return exit_usage;

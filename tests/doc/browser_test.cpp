@@ -1,4 +1,4 @@
-// esi-doc's pages and esi-diff's HTML report in a real browser: headless Chromium, driven over
+// esi-doc's pages, esi-diff's HTML report and esi-net's process-image page in a real browser: headless Chromium, driven over
 // the DevTools protocol by tests/doc/page_facts.py (Python standard library only), which reports
 // what the browser laid out and painted. Asserted here for every page, at 1280 px:
 //   - no horizontal overflow;
@@ -124,6 +124,11 @@ TEST(Browser, SamplePagesAndTheirHtmlDiffs) {
     }
     const fs::path data = esi::test::source_dir() / "tests" / "diff" / "data";
     pages.push_back(diff_page(data / "old.xml", data / "new.xml", dir / "diff.html"));
+    // esi-net's process-image map of the sample line.
+    const auto net = run({tool("esi-net").string(), "--no-cache", "build", (esi::test::source_dir() / "samples" / "networks" / "line.yaml").string(),
+                          "-o", (dir / "line").string(), "--only", "html"});
+    EXPECT_EQ(net.exit_code, 0) << net.err;
+    pages.push_back({dir / "line" / "process_image.html", std::nullopt});
     check_in_browser(*browser, pages, dir);
 }
 

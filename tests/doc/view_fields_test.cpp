@@ -20,7 +20,9 @@
 
 #include "doc/diff_view.hpp"
 #include "doc/page_views.hpp"
+#include "doc/process_image_view.hpp"
 #include "doc_test_support.hpp"
+#include "esi/net/network.hpp"
 
 namespace {
 
@@ -64,13 +66,24 @@ void collect_diff(const fs::path& old_path, const fs::path& new_path, PageFields
     collect(view, "", out["diff"]);
 }
 
+// esi-net's process-image page of samples/networks/line.yaml.
+void collect_process_image(PageFields& out) {
+    const esi::net::NetworkFileResult read =
+        esi::net::read_network_file((esi::test::source_dir() / "samples" / "networks" / "line.yaml").string());
+    ASSERT_TRUE(read.spec);
+    const esi::net::BuildResult built = esi::net::build_network(*read.spec, esi::net::BuildOptions{});
+    ASSERT_TRUE(built.network);
+    esi::codegen::ViewArena arena;
+    collect(esi::doc::process_image_view(arena, *built.network, "css"), "", out["process-image"]);
+}
+
 // The field tables of docs/esi-doc.md: under a heading "### ... page" naming the page (device,
-// index, diff), a heading "#### The root" or "#### `path`, `path` …" starts the objects whose
+// index, diff, process-image), a heading "#### The root" or "#### `path`, `path` …" starts the objects whose
 // fields are the rows "| `key` | … |" of the table that follows (objects of one shape share it).
 PageFields documented_fields() {
     std::ifstream in(esi::test::source_dir() / "docs" / "esi-doc.md");
     EXPECT_TRUE(in) << "docs/esi-doc.md missing";
-    const std::regex page_heading(R"(^### .*\b(device|index|diff) page)", std::regex::icase);
+    const std::regex page_heading(R"(^### .*\b(device|index|diff|process-image) page)", std::regex::icase);
     const std::regex path_in_heading("`([^`]*)`");
     const std::regex row(R"(^\| `([a-z_0-9]+)` \|)");
     PageFields out;
@@ -121,6 +134,7 @@ PageFields walked_views(bool with_corpus) {
     for (const fs::path& source : sample_sources()) collect_pages(load(source), seen);
     const fs::path data = esi::test::source_dir() / "tests" / "diff" / "data";
     collect_diff(data / "old.xml", data / "new.xml", seen);
+    collect_process_image(seen);
     if (with_corpus) {
         const fs::path c = esi::test::corpus_esi_dir();
         for (const char* file : {"Beckhoff__AX5xxx__dls-ethercat.xml", "Beckhoff__AX5101-xxxx-0210_Dict__dls-ethercat.xml",
@@ -163,7 +177,8 @@ TEST(DocViewFields, TheShippedTemplatesUseOnlyDocumentedFields) {
     const PageFields listed = documented_fields();
     const std::regex tag(R"(\{\{\{?\s*[#^/&]?\s*([A-Za-z_][A-Za-z0-9_.]*)\s*\}?\}\})");
     for (const auto& [file, page] : std::map<std::string, std::string>{
-             {"device.html.mustache", "device"}, {"index.html.mustache", "index"}, {"diff.html.mustache", "diff"}}) {
+             {"device.html.mustache", "device"}, {"index.html.mustache", "index"}, {"diff.html.mustache", "diff"},
+             {"process_image.html.mustache", "process-image"}}) {
         SCOPED_TRACE(file);
         std::set<std::string> fields;
         for (const auto& [path, keys] : listed.at(page)) fields.insert(keys.begin(), keys.end());

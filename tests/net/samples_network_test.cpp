@@ -52,7 +52,8 @@ TEST(SamplesNetwork, TheCliWritesEveryOutputAndTheMapAgreesWithTheEni) {
     esi::test::TempDir dir;
     const auto result = esi::test::run({esi::test::tool("esi-net").string(), "--no-cache", "build", line_network().string(), "-o", dir.path().string()});
     ASSERT_EQ(result.exit_code, 0) << result.err;
-    for (const char* name : {"network.xml", "igh_config.h", "igh_config.c", "lcec.xml", "process_image.json", "process_image.csv", "process_image.md"})
+    for (const char* name : {"network.xml", "igh_config.h", "igh_config.c", "lcec.xml", "process_image.json", "process_image.csv", "process_image.md",
+                             "process_image.html"})
         EXPECT_TRUE(fs::exists(dir / name)) << name;
     const std::string csv = esi::test::read_text(dir / "process_image.csv");
     EXPECT_NE(csv.find("Axis 1.Outputs.Target position,Axis 1,2,output,0x1601,0x607A,0x00,DINT,32,9,0\n"), std::string::npos) << csv;
@@ -70,6 +71,7 @@ TEST(SamplesNetwork, TheCliWritesEveryOutputAndTheMapAgreesWithTheEni) {
     EXPECT_TRUE(fs::exists(only / "process_image.md"));
     EXPECT_FALSE(fs::exists(only / "network.xml"));
     EXPECT_FALSE(fs::exists(only / "igh_config.c"));
+    EXPECT_FALSE(fs::exists(only / "process_image.html"));
 }
 
 TEST(SamplesNetwork, OutputsAreByteIdenticalRunToRun) {

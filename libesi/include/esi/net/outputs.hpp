@@ -7,6 +7,9 @@
 //                                      domain registration, start-up SDOs and DC
 //   lcec  lcec.xml                     linuxcnc-ethercat configuration (generic slaves)
 //   map   process_image.json/.csv/.md  every process-image variable and where it sits
+//   html  process_image.html           the same map drawn as bit-layout pictures: written by the
+//                                      doc layer (esi/doc/process_image_page.hpp), which has the
+//                                      page templates, so network_outputs leaves it to its caller
 
 #include <filesystem>
 #include <optional>
@@ -20,11 +23,11 @@
 
 namespace esi::net {
 
-enum class OutputKind { eni, igh, lcec, map };
+enum class OutputKind { eni, igh, lcec, map, html };
 
 [[nodiscard]] std::span<const OutputKind> all_output_kinds();
 [[nodiscard]] std::string_view to_string(OutputKind kind);
-// "eni,igh,lcec,map" (any subset, any order); nullopt and a message when a name is unknown.
+// "eni,igh,lcec,map,html" (any subset, any order); nullopt and a message when a name is unknown.
 [[nodiscard]] std::optional<std::vector<OutputKind>> parse_output_kinds(std::string_view text, std::string& error);
 
 [[nodiscard]] std::string write_eni(const Network& network);
@@ -35,8 +38,8 @@ enum class OutputKind { eni, igh, lcec, map };
 [[nodiscard]] std::string write_map_csv(const Network& network);
 [[nodiscard]] std::string write_map_markdown(const Network& network);
 
-// The files of the chosen kinds under `directory`, in a fixed order; write them with
-// write_files_atomically (all or nothing).
+// The files of the chosen kinds under `directory`, in a fixed order, but for html (see above);
+// write them with write_files_atomically (all or nothing).
 [[nodiscard]] std::vector<OutputFile> network_outputs(const Network& network, std::span<const OutputKind> kinds,
                                                       const std::filesystem::path& directory);
 
