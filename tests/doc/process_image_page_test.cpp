@@ -123,6 +123,48 @@ TEST(ProcessImagePage, AMissingTemplateIsADiagnosticAndNoFile) {
     EXPECT_TRUE(page.files.empty());
 }
 
+// Two frames: one picture per frame and direction, each with the variables of its frame's slaves
+// at their offsets from the image's start.
+TEST(ProcessImagePage, ANetworkOfTwoFramesHasAPicturePerFrameAndDirection) {
+    esi::net::Network network;
+    network.name = "two-frames";
+    network.image.frames.resize(2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        esi::net::NetworkSlave s;
+        s.name = i == 0 ? "Near" : "Far";
+        s.position = i;
+        s.frame = i;
+        s.image_offset = i == 0 ? 0 : 1400;
+        network.slaves.push_back(s);
+        esi::net::Variable v;
+        v.slave = i;
+        v.name = s.name + ".Inputs.Value";
+        v.index = 0x6000;
+        v.subindex = 1;
+        v.data_type = "UINT";
+        v.bit_size = 16;
+        v.bit_offset = std::uint64_t{s.image_offset} * 8;
+        v.direction = esi::PdoDirection::tx;
+        network.image.inputs.push_back(v);
+        v.name = s.name + ".Outputs.Value";
+        v.index = 0x7000;
+        v.direction = esi::PdoDirection::rx;
+        network.image.outputs.push_back(v);
+    }
+    const std::string html = render(network);
+    for (const char* id : {"out-f0", "out-f1", "in-f0", "in-f1"}) EXPECT_EQ(count(html, std::string("class=\"bit-layout\" id=\"") + id + "\""), 1u) << id;
+    EXPECT_EQ(count(html, "role=\"img\" aria-label=\"Far: Inputs.Value: 0x6000:01, UINT, 16 bits at byte 1400 bit 0\""), 1u);
+    EXPECT_EQ(count(html, "role=\"img\" aria-label=\"Near: Outputs.Value: 0x7000:01, UINT, 16 bits at byte 0 bit 0\""), 1u);
+    EXPECT_EQ(count(html, "role=\"img\" aria-label=\""), 4u);
+    EXPECT_NE(html.find("Inputs (slaves to master), frame 1"), std::string::npos);
+    // Frame 1's picture holds only Far's variable: Near's is drawn in frame 0's.
+    const std::size_t f1 = html.find("id=\"out-f1\"");
+    ASSERT_NE(f1, std::string::npos);
+    const std::string picture = html.substr(f1, html.find("</svg>", f1) - f1);
+    EXPECT_EQ(count(picture, "aria-label=\"Far: "), 1u);
+    EXPECT_EQ(count(picture, "aria-label=\"Near: "), 0u);
+}
+
 TEST(ProcessImagePage, EsiNetWritesItByDefaultAndWithOnlyHtml) {
     esi::test::TempDir dir;
     const auto all = esi::test::run({esi::test::tool("esi-net").string(), "--no-cache", "build", line_network().string(), "-o", (dir / "all").string()});
