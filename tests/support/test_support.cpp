@@ -2,10 +2,12 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -22,6 +24,28 @@ std::filesystem::path corpus_esi_dir() { return shared_dir() / "corpus" / "esi";
 bool have_shared_corpus() { return std::filesystem::is_directory(corpus_esi_dir()); }
 
 std::filesystem::path tool(const std::string& name) { return binary_dir() / "cli" / name; }
+
+namespace {
+
+// A tool may exit without reading its standard input (a usage error): the write then fails with
+// EPIPE, and the SIGPIPE it raises must not end the test program. SIGPIPE goes to the writing
+// thread, so it is held back here and a pending one is consumed.
+ssize_t write_without_sigpipe(int fd, const char* data, std::size_t size) {
+    sigset_t pipe_signal, previous;
+    sigemptyset(&pipe_signal);
+    sigaddset(&pipe_signal, SIGPIPE);
+    pthread_sigmask(SIG_BLOCK, &pipe_signal, &previous);
+    const ssize_t n = write(fd, data, size);
+    if (n < 0 && errno == EPIPE) {
+        const timespec no_wait{0, 0};
+        while (sigtimedwait(&pipe_signal, nullptr, &no_wait) == SIGPIPE) {
+        }
+    }
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    return n;
+}
+
+}  // namespace
 
 RunResult run(const std::vector<std::string>& argv, const std::string& stdin_data, const std::filesystem::path& cwd) {
     int in_pipe[2], out_pipe[2], err_pipe[2];
@@ -69,7 +93,7 @@ RunResult run(const std::vector<std::string>& argv, const std::string& stdin_dat
         if (poll(fds.data(), fds.size(), -1) < 0) break;
         for (const auto& p : fds) {
             if (p.fd == in_pipe[1] && (p.revents & (POLLOUT | POLLERR | POLLHUP))) {
-                const ssize_t n = write(in_pipe[1], stdin_data.data() + written, stdin_data.size() - written);
+                const ssize_t n = write_without_sigpipe(in_pipe[1], stdin_data.data() + written, stdin_data.size() - written);
                 if (n > 0) written += static_cast<std::size_t>(n);
                 if (n < 0 || written == stdin_data.size()) {
                     close(in_pipe[1]);
