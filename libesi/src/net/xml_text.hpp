@@ -1,12 +1,14 @@
 #pragma once
 // A small indenting XML text builder for the network writers (ENI, linuxcnc-ethercat): elements
-// in the order they are opened, two spaces per level, text and attribute values escaped, CDATA
-// where a format asks for it. Output is a pure function of the calls, hence deterministic.
+// in the order they are opened, two spaces per level, text and attribute values escaped by the
+// project's one escaper (esi/xml_text.hpp), CDATA where a format asks for it. Output is a pure function of the calls, hence deterministic.
 
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#include "esi/xml_text.hpp"
 
 namespace esi::net {
 
@@ -82,17 +84,10 @@ private:
             out_ += '"';
         }
     }
+    // The project's one XML escaper: markup, and characters XML 1.0 cannot carry (controls,
+    // invalid UTF-8 in a device name) become U+FFFD, so ENI and lcec files stay well-formed.
     void escape(std::string_view text, bool attribute) {
-        for (char c : text) {
-            switch (c) {
-                case '&': out_ += "&amp;"; break;
-                case '<': out_ += "&lt;"; break;
-                case '>': out_ += "&gt;"; break;
-                case '"': out_ += attribute ? "&quot;" : "\""; break;
-                case '\n': out_ += attribute ? "&#10;" : "\n"; break;
-                default: out_ += c;
-            }
-        }
+        append_xml_escaped(out_, text, attribute ? XmlTextKind::attribute_value : XmlTextKind::character_data);
     }
 
     std::string out_;
