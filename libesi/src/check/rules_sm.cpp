@@ -15,6 +15,7 @@
 #include "check/areas.hpp"
 #include "check/queries.hpp"
 #include "check/rule_cache.hpp"
+#include "check/sm_memory.hpp"
 #include "check/sm_roles.hpp"
 #include "esi/number.hpp"
 
@@ -46,52 +47,6 @@ std::string_view typical_control_byte(SmRole role) {
         case SmRole::unknown: break;
     }
     return "";
-}
-
-// A buffered SM occupies three consecutive buffers of its size in ESC process memory (ESC
-// datasheet, "3-buffer mode"); a mailbox SM one. Without a ControlByte the role decides. Below
-// 0x1000 lies the register area, where Beckhoff places 1-byte buffered SMs on the digital I/O
-// bytes 0x0F00, 0x0F01 … next to each other (EL2xxx, EK18xx, EM2xxx): no buffers are laid out there.
-constexpr std::uint32_t process_memory_start = 0x1000;
-
-// Whether the ESC's PDI is digital I/O: SII word 0 (ConfigData byte 0, PDI control register
-// 0x0140) = 0x04 (ESC datasheet section II, PDI control). Such an ESC moves the I/O bytes itself;
-// the 1-byte SMs that Beckhoff's digital terminals put on them take one byte each, and they sit at
-// consecutive addresses.
-bool has_digital_io_pdi(const Device& device) {
-    if (!device.eeprom || !device.eeprom->config_data) return false;
-    const std::string_view text = device.eeprom->config_data->text;
-    return text.size() >= 2 && text[0] == '0' && text[1] == '4';
-}
-
-// A mailbox SM counts as one buffer even when its ControlByte says buffered: that fault is
-// sm-mailbox-mode's, and counting it again as an overlap would report one fault twice.
-bool occupies_three_buffers(const Device& device, const SyncManager& sm, std::uint64_t size) {
-    if (sm.start_address && *sm.start_address < process_memory_start) return false;
-    if (role_is_mailbox(device_sm_role(device, sm))) return false;
-    if (size == 1 && has_digital_io_pdi(device)) return false;
-    return sm.control_byte ? (*sm.control_byte & 0x03) == 0x00 : true;
-}
-
-// Bytes of the PDOs a device assigns to SM `number` by default (Pdo@Sm).
-std::uint64_t default_pdo_bytes(const Device& device, std::size_t number) {
-    std::uint64_t bits = 0;
-    for (const auto* list : {&device.rx_pdos, &device.tx_pdos})
-        for (const auto& pdo : *list)
-            if (pdo.sm && *pdo.sm == number) bits += pdo.bit_size();
-    return (bits + 7) / 8;
-}
-
-// The size an SM has when the master starts it. Masters compute a process-data SM's length from
-// the PDOs assigned to it (DefaultSize then only says how much room the firmware reserves, often the
-// maximum); mailbox SMs and process-data SMs without default PDOs take DefaultSize.
-std::uint64_t effective_size(const Device& device, std::size_t number) {
-    const SyncManager& sm = device.sms[number];
-    if (!role_is_mailbox(device_sm_role(device, sm))) {
-        const std::uint64_t pdo_bytes = default_pdo_bytes(device, number);
-        if (pdo_bytes > 0) return pdo_bytes;
-    }
-    return sm.default_size.value_or(0);
 }
 
 // ---- sm-direction-mismatch ------------------------------------------------------------------
