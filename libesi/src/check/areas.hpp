@@ -20,6 +20,7 @@ namespace esi::rules {
 void add_xml(std::vector<Rule>& out);            // rules_xml.cpp: front-end findings (no check function)
 void add_identity(std::vector<Rule>& out);       // identity-…: vendor id, product code, names, groups
 void add_sm(std::vector<Rule>& out);             // sm-…: SyncManagers
+void add_sm_esc(std::vector<Rule>& out);         // sm-…: what the ESC has room for (memory, SM blocks)
 void add_fmmu(std::vector<Rule>& out);           // fmmu-…
 void add_pdo_structure(std::vector<Rule>& out);  // pdo-…: the PDO list of a device or module
 void add_pdo_entry(std::vector<Rule>& out);      // pdo-…: PDO entries on their own

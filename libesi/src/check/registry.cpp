@@ -14,6 +14,7 @@ std::vector<Rule> build_catalogue() {
     rules::add_xml(rules);
     rules::add_identity(rules);
     rules::add_sm(rules);
+    rules::add_sm_esc(rules);
     rules::add_fmmu(rules);
     rules::add_pdo_structure(rules);
     rules::add_pdo_entry(rules);
