@@ -6,6 +6,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/esc_controller.hpp"
 #include "check/sm_memory.hpp"
 #include "check/sm_roles.hpp"
 #include "esi/number.hpp"
@@ -139,11 +140,41 @@ constexpr Rule sm_address_area{
     .check = check_address_area,
 };
 
+// ---- sm-count ---------------------------------------------------------------------------------
+
+void check_sm_count(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        const BlockLimit limit = block_limit(*device, "SmCount", "SyncManagers");
+        if (device->sms.size() <= limit.count) continue;
+        const SyncManager& first_extra = device->sms[limit.count];
+        context.report(first_extra.pos, "the device describes " + std::to_string(device->sms.size()) + " SyncManagers, SM" +
+                                            std::to_string(limit.count) + " and above are more than the ESC has (" +
+                                            limit.because + "); the master cannot configure them");
+    }
+}
+
+constexpr Rule sm_count{
+    .id = "sm-count",
+    .default_severity = Severity::error,
+    .summary = "More Sm elements than the ESC has SyncManagers (EtherCATController/SmCount, at most 16)",
+    .rationale =
+        "The n-th Sm element is SyncManager n, and the master writes it to the register block 0x0800 + 8n (ETG.1000.4; "
+        "ESC datasheet section II). An ESC has as many SyncManagers as its register 0x0005 says (4 to 16), stated in "
+        "the ESI as Info/EtherCATController/SmCount, and the register map has room for 16 at most (0x0880 onwards is "
+        "no SM). An SM beyond that is written nowhere, and the process data assigned to it are never exchanged (the "
+        "device answers PRE-OP -> SAFE-OP with AL status 0x0017 invalid SM configuration, or the master refuses "
+        "it). A vendor's own, lower limit is profile-sm-count's (limits.max_sms).",
+    .bad_example = "<Info><EtherCATController><SmCount>4</SmCount></EtherCATController></Info> … five <Sm> elements",
+    .good_example = "<Info><EtherCATController><SmCount>4</SmCount></EtherCATController></Info> … four <Sm> elements",
+    .check = check_sm_count,
+};
+
 }  // namespace
 
 void add_sm_esc(std::vector<Rule>& out) {
     out.insert(out.end(), {
         sm_address_area,
+        sm_count,
     });
 }
 

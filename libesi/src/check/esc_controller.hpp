@@ -1,0 +1,26 @@
+#pragma once
+// What a description says of its ESC's resources (Info/EtherCATController: DpramSize, SmCount,
+// FmmuCount; ESC registers 0x0006, 0x0005, 0x0004), bounded by what the register map has room for.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "esi/model/device.hpp"
+
+namespace esi::rules {
+
+// The register map has room for 16 SyncManagers (0x0800 + 8n up to 0x087F) and 16 FMMUs (0x0600 +
+// 16n up to 0x06FF; ESC datasheet section II).
+constexpr std::uint64_t register_map_blocks = 16;
+
+struct BlockLimit {
+    std::uint64_t count;
+    std::string because;  // for the message: where the count comes from
+};
+
+// How many register blocks of a kind the ESC has: Info/EtherCATController/<element> (SmCount,
+// FmmuCount) where given and readable, else the register map's 16. `what` names the blocks.
+[[nodiscard]] BlockLimit block_limit(const Device& device, std::string_view element, std::string_view what);
+
+}  // namespace esi::rules
