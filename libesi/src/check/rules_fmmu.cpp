@@ -5,6 +5,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/esc_controller.hpp"
 #include "check/queries.hpp"
 #include "check/sm_roles.hpp"
 #include "esi/text_distance.hpp"
@@ -163,6 +164,37 @@ constexpr Rule fmmu_missing{
     .check = check_missing,
 };
 
+// ---- fmmu-count -------------------------------------------------------------------------------
+
+void check_fmmu_count(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        const BlockLimit limit = block_limit(*device, "FmmuCount", "FMMUs");
+        if (device->fmmus.size() <= limit.count) continue;
+        const Fmmu& first_extra = device->fmmus[limit.count];
+        context.report(first_extra.pos, "the device describes " + std::to_string(device->fmmus.size()) + " FMMUs, FMMU" +
+                                            std::to_string(limit.count) + " and above are more than the ESC has (" +
+                                            limit.because + "); the master cannot configure them");
+    }
+}
+
+constexpr Rule fmmu_count{
+    .id = "fmmu-count",
+    .default_severity = Severity::error,
+    .summary = "More Fmmu elements than the ESC has FMMUs (EtherCATController/FmmuCount, at most 16)",
+    .rationale =
+        "The master configures one FMMU per Fmmu element in the register block 0x0600 + 16n (ETG.1000.4; ESC "
+        "datasheet section II). An ESC has as many FMMUs as its register 0x0004 says (2 to 16), stated in the ESI as "
+        "Info/EtherCATController/FmmuCount, and the register map has room for 16 at most. The SII FMMU category "
+        "(ETG.2010) lists the same elements and the conformance tool counts them (CTT TF-1300 3-3); an FMMU the ESC "
+        "lacks maps nothing, so the direction it was meant for exchanges no process data. A vendor's own, lower "
+        "limit is profile-fmmu-count's (limits.max_fmmus).",
+    .bad_example = "<Info><EtherCATController><FmmuCount>2</FmmuCount></EtherCATController></Info> … <Fmmu>Outputs</Fmmu>"
+                   "<Fmmu>Inputs</Fmmu><Fmmu>MBoxState</Fmmu>",
+    .good_example = "<Info><EtherCATController><FmmuCount>3</FmmuCount></EtherCATController></Info> … <Fmmu>Outputs</Fmmu>"
+                    "<Fmmu>Inputs</Fmmu><Fmmu>MBoxState</Fmmu>",
+    .check = check_fmmu_count,
+};
+
 }  // namespace
 
 void add_fmmu(std::vector<Rule>& out) {
@@ -170,6 +202,7 @@ void add_fmmu(std::vector<Rule>& out) {
         fmmu_type_unknown,
         fmmu_sm_reference,
         fmmu_missing,
+        fmmu_count,
     });
 }
 
