@@ -205,6 +205,43 @@ constexpr Rule dc_assign_activate{
     .check = check_assign_activate,
 };
 
+// ---- dc-assign-activate-reserved ------------------------------------------------------------
+
+// Register 0x0980 (cyclic unit control, AssignActivate's low byte): bit 0 hands the cyclic unit to
+// the PDI, bits 4 and 5 latch units 0 and 1; bits 1-3 and 6-7 are reserved (ESC datasheet section
+// II, register 0x0980).
+constexpr std::uint32_t cyclic_unit_control_reserved = 0x00CE;
+
+void check_assign_activate_reserved(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->dc) continue;
+        for (const auto& mode : device->dc->op_modes) {
+            if (!mode.has_assign_activate || mode.assign_activate > 0xFFFF) continue;  // dc-assign-activate's
+            const std::uint32_t reserved = mode.assign_activate & cyclic_unit_control_reserved;
+            if (reserved == 0) continue;
+            context.report(mode.assign_activate_pos,
+                           op_mode_label(mode) + ": AssignActivate " + format_hex(mode.assign_activate, 4) + " sets " +
+                               format_hex(reserved, 2) + " in its low byte, reserved bits of register 0x0980 (only "
+                               "bit 0, cyclic unit to PDI, and bits 4-5, latch units to PDI, have a meaning)");
+        }
+    }
+}
+
+constexpr Rule dc_assign_activate_reserved{
+    .id = "dc-assign-activate-reserved",
+    .default_severity = Severity::error,
+    .summary = "AssignActivate with reserved bits of register 0x0980 (its low byte)",
+    .rationale =
+        "The master writes AssignActivate's low byte into ESC register 0x0980, cyclic unit control: bit 0 gives the "
+        "SYNC unit to the PDI, bits 4 and 5 the latch units; bits 1-3 and 6-7 are reserved and must be written 0 "
+        "(Beckhoff ESC datasheet section II, register 0x0980). The values in use are #x00, #x01, #x20 and #x30 "
+        "(Beckhoff's catalogues: #x0730, #x0301, #x0120, #x0030); any other bit is a typing slip, most often a "
+        "SYNC activation shifted into the wrong byte (#x0003 for #x0300), and gives undefined ESC behaviour.",
+    .bad_example = "<OpMode><Name>DC</Name><AssignActivate>#x0003</AssignActivate></OpMode>",
+    .good_example = "<OpMode><Name>DC</Name><AssignActivate>#x0300</AssignActivate></OpMode>",
+    .check = check_assign_activate_reserved,
+};
+
 // ---- dc-cycle-time --------------------------------------------------------------------------
 
 void check_cycle_time(const EsiDocument& document, RuleContext& context) {
@@ -273,6 +310,7 @@ void add_dc(std::vector<Rule>& out) {
         dc_opmode_name,
         dc_opmode_duplicate,
         dc_assign_activate,
+        dc_assign_activate_reserved,
         dc_cycle_time,
     });
 }
