@@ -242,6 +242,38 @@ constexpr Rule dc_assign_activate_reserved{
     .check = check_assign_activate_reserved,
 };
 
+// ---- dc-sync1-without-sync0 -----------------------------------------------------------------
+
+void check_sync1_without_sync0(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->dc) continue;
+        for (const auto& mode : device->dc->op_modes) {
+            if (!mode.has_assign_activate || mode.assign_activate > 0xFFFF) continue;
+            const std::uint32_t aa = mode.assign_activate;
+            if ((aa & activate_cyclic) == 0 || (aa & activate_sync1) == 0 || (aa & activate_sync0) != 0) continue;
+            context.report(mode.assign_activate_pos,
+                           op_mode_label(mode) + ": AssignActivate " + format_hex(aa, 4) +
+                               " generates SYNC1 but not SYNC0; SYNC1 is timed from the SYNC0 pulses (its cycle time "
+                               "is the delay after SYNC0), so activate both (" + format_hex(aa | activate_sync0, 4) + ")");
+        }
+    }
+}
+
+constexpr Rule dc_sync1_without_sync0{
+    .id = "dc-sync1-without-sync0",
+    .default_severity = Severity::warning,
+    .summary = "AssignActivate that generates SYNC1 without SYNC0",
+    .rationale =
+        "Register 0x0981 bit 1 generates SYNC0 and bit 2 SYNC1 (ESC datasheet section II). SYNC1 is derived from "
+        "SYNC0: the SYNC1 cycle time (0x09A4) is the delay after a SYNC0 pulse, and CycleTimeSync1 in the ESI and "
+        "the SII DC category (ETG.2010) count in SYNC0 cycles. An OpMode with SYNC1 alone (#x0500) is a slip for "
+        "#x0700: every SYNC1 OpMode of Beckhoff's catalogues activates SYNC0 too (#x0700, #x0730), and SOEM's "
+        "ecx_dcsync01 always activates both. Whether the ESC still emits SYNC1 depends on the ESC, so a warning.",
+    .bad_example = "<OpMode><Name>DC</Name><AssignActivate>#x0500</AssignActivate></OpMode>",
+    .good_example = "<OpMode><Name>DC</Name><AssignActivate>#x0700</AssignActivate></OpMode>",
+    .check = check_sync1_without_sync0,
+};
+
 // ---- dc-cycle-time --------------------------------------------------------------------------
 
 void check_cycle_time(const EsiDocument& document, RuleContext& context) {
@@ -311,6 +343,7 @@ void add_dc(std::vector<Rule>& out) {
         dc_opmode_duplicate,
         dc_assign_activate,
         dc_assign_activate_reserved,
+        dc_sync1_without_sync0,
         dc_cycle_time,
     });
 }
