@@ -274,6 +274,59 @@ constexpr Rule dc_sync1_without_sync0{
     .check = check_sync1_without_sync0,
 };
 
+// ---- dc-opmode-sm-reference -----------------------------------------------------------------
+
+std::optional<std::uint64_t> number_of(std::string_view text) {
+    const ParsedNumber n = parse_number(text);
+    return n.ok() && !n.value.negative ? std::optional<std::uint64_t>(n.value.magnitude) : std::nullopt;
+}
+
+void check_opmode_sm_reference(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->dc) continue;
+        for (const auto& mode : device->dc->op_modes) {
+            for (const XmlElement& sm : mode.extras.elements) {
+                if (sm.name != "Sm") continue;
+                const XmlAttribute* no = sm.attribute("No");
+                const std::optional<std::uint64_t> number = no ? number_of(no->value) : std::nullopt;
+                const std::uint64_t sm_number = number.value_or(0);
+                const std::string sm_name = number ? "SM" + std::to_string(sm_number) : std::string("its SM");
+                if (number && sm_number >= device->sms.size()) {
+                    context.report(sm.pos, op_mode_label(mode) + ": Sm No=\"" + no->value + "\" names " + sm_name +
+                                               ", but the device has " + std::to_string(device->sms.size()) + " SyncManagers");
+                    continue;
+                }
+                // A slot device's PDOs come from the modules plugged into it.
+                if (device->slots) continue;
+                for (const XmlElement& pdo : sm.children) {
+                    if (pdo.name != "Pdo") continue;
+                    const std::optional<std::uint64_t> index = number_of(pdo.text);
+                    if (!index || *index > 0xFFFF || device->find_pdo(static_cast<std::uint32_t>(*index))) continue;
+                    context.report(pdo.pos, op_mode_label(mode) + ": Pdo " + format_hex(*index, 4) +
+                                                " assigned to " + sm_name +
+                                                " is not a PDO of the device; a tool selecting this OpMode cannot assign it");
+                }
+            }
+        }
+    }
+}
+
+constexpr Rule dc_opmode_sm_reference{
+    .id = "dc-opmode-sm-reference",
+    .default_severity = Severity::warning,
+    .summary = "A Dc OpMode's Sm names a missing SyncManager, or its Pdo a PDO the device does not have",
+    .rationale =
+        "An OpMode can state the PDO assignment that goes with it: Dc/OpMode/Sm@No names the SyncManager (the n-th Sm "
+        "element) and its Pdo children the PDOs a configuration tool assigns to it when the user selects the mode "
+        "(ETG.2000 Dc/OpMode/Sm). A missing SM or PDO leaves the tool without the assignment the mode needs; Beckhoff's "
+        "EL2262 lists #x1B02 for SM2 where the device's PDO on SM2 is #x1702. Masters that do not follow OpMode "
+        "assignments (and the SII, which has no place for them) are unaffected, so a warning. Slot devices, whose "
+        "PDOs come from their modules, are only checked for the SM.",
+    .bad_example = "<OpMode><Name>DcSync</Name>…<Sm No=\"2\"><Pdo>#x1B02</Pdo></Sm></OpMode> (no PDO #x1B02)",
+    .good_example = "<OpMode><Name>DcSync</Name>…<Sm No=\"2\"><Pdo>#x1702</Pdo></Sm></OpMode>",
+    .check = check_opmode_sm_reference,
+};
+
 // ---- dc-cycle-time --------------------------------------------------------------------------
 
 void check_cycle_time(const EsiDocument& document, RuleContext& context) {
@@ -344,6 +397,7 @@ void add_dc(std::vector<Rule>& out) {
         dc_assign_activate,
         dc_assign_activate_reserved,
         dc_sync1_without_sync0,
+        dc_opmode_sm_reference,
         dc_cycle_time,
     });
 }
