@@ -38,6 +38,41 @@ constexpr Rule mailbox_data_link_layer{
     .check = check_data_link_layer,
 };
 
+// ---- mailbox-sm-disabled --------------------------------------------------------------------
+
+void check_sm_disabled(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->mailbox || device->mailbox->protocol_bits() == 0) continue;
+        for (std::size_t n = 0; n < device->sms.size(); ++n) {
+            const SyncManager& sm = device->sms[n];
+            const SmRole role = device_sm_role(*device, sm);
+            if (role != SmRole::mailbox_out && role != SmRole::mailbox_in) continue;
+            if (!sm.enable || (*sm.enable & 1) != 0) continue;
+            context.report(sm.pos, "SM" + std::to_string(n) + " '" + sm.type + "' is a mailbox SM with Enable=\"" +
+                                       std::to_string(*sm.enable) +
+                                       "\"; masters program the mailbox SMs with this enable bit (SII SyncM category), "
+                                       "so the mailbox never receives or answers. Write Enable=\"1\"",
+                           {context.note(device->mailbox->pos, "the Mailbox whose protocols need it")});
+        }
+    }
+}
+
+constexpr Rule mailbox_sm_disabled{
+    .id = "mailbox-sm-disabled",
+    .default_severity = Severity::error,
+    .summary = "A mailbox SM with Enable=\"0\" on a device whose Mailbox names protocols",
+    .rationale =
+        "Sm@Enable becomes the enable byte of the SII SyncM category (ETG.2010), and masters program SM0/SM1 with it "
+        "at INIT -> PRE-OP: SOEM's ecx_config_init copies the SII control byte and enable byte into the mailbox SMs' "
+        "registers (0x0804-0x0806 + 8n) as they are. A disabled mailbox SM takes no requests, so every mailbox "
+        "protocol the Mailbox element declares (CoE, FoE, EoE …) times out and a device whose configuration needs "
+        "SDOs never reaches SAFE-OP. Process-data SMs may start disabled (their length comes from the PDOs); a "
+        "mailbox SM may not.",
+    .bad_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"0\">MBoxOut</Sm>",
+    .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
+    .check = check_sm_disabled,
+};
+
 // ---- mailbox-sm-missing ---------------------------------------------------------------------
 
 void check_sm_missing(const EsiDocument& document, RuleContext& context) {
@@ -107,6 +142,7 @@ void add_mailbox(std::vector<Rule>& out) {
     out.insert(out.end(), {
         mailbox_data_link_layer,
         mailbox_sm_missing,
+        mailbox_sm_disabled,
         mailbox_protocol_missing,
     });
 }
