@@ -414,6 +414,44 @@ constexpr Rule initcmd_pdo_transition{
     .check = check_pdo_transition,
 };
 
+// ---- initcmd-complete-access-unsupported ----------------------------------------------------
+
+void check_complete_access_unsupported(const EsiDocument& document, RuleContext& context) {
+    // Devices only: a module's commands go to the device it is plugged into, whose CoE element
+    // declares complete access, and that device is not known here.
+    for (const Device* device : all_devices(document)) {
+        if (!device->mailbox || !device->mailbox->coe) continue;
+        const CoeProtocol& coe = *device->mailbox->coe;
+        if (coe.complete_access.value_or(false)) continue;
+        for (const InitCmd& cmd : coe.init_cmds) {
+            if (!cmd.complete_access.value_or(false)) continue;
+            const InitCmdSite site{&cmd, MailboxProtocol::coe, nullptr};
+            context.report(cmd.pos, describe(site) + " uses complete access, but the device's CoE element " +
+                                        (coe.complete_access ? "says CompleteAccess=\"false\"" : "does not declare CompleteAccess") +
+                                        "; the device refuses the download (SDO abort 0x06010004) and the start-up stops. "
+                                        "Declare CompleteAccess=\"true\" or write the sub-indices one by one",
+                           {context.note(coe.pos, "the CoE element")});
+        }
+    }
+}
+
+constexpr Rule initcmd_complete_access_unsupported{
+    .id = "initcmd-complete-access-unsupported",
+    .default_severity = Severity::error,
+    .summary = "A CoE InitCmd with complete access on a device that does not declare CompleteAccess",
+    .rationale =
+        "CoE@CompleteAccess says whether the device serves SDO complete access (ETG.2000 CoE; the SII General "
+        "category copies it as CoE detail bit 5, ETG.2010). An InitCmd with CompleteAccess=\"true\" makes the master "
+        "send an SDO download with the complete-access bit (ETG.1000.6 SDO initiate download, bit 4); a device "
+        "without the service answers with abort 0x06010004 'object cannot be accessed with complete access' and the "
+        "master stops the state change. The attribute defaults to false, so leaving it out declares no support.",
+    .bad_example = "<CoE SdoInfo=\"true\"><InitCmd CompleteAccess=\"true\"><Transition>PS</Transition><Index>#x1C12</Index>"
+                   "…</InitCmd></CoE>",
+    .good_example = "<CoE SdoInfo=\"true\" CompleteAccess=\"true\"><InitCmd CompleteAccess=\"true\"><Transition>PS</"
+                    "Transition><Index>#x1C12</Index>…</InitCmd></CoE>",
+    .check = check_complete_access_unsupported,
+};
+
 }  // namespace
 
 void add_initcmd(std::vector<Rule>& out) {
@@ -426,6 +464,7 @@ void add_initcmd(std::vector<Rule>& out) {
         initcmd_target_missing,
         initcmd_read_only_target,
         initcmd_pdo_transition,
+        initcmd_complete_access_unsupported,
     });
 }
 
