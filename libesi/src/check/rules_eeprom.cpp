@@ -6,6 +6,7 @@
 
 #include "check/areas.hpp"
 #include "check/queries.hpp"
+#include "esi/number.hpp"
 
 namespace esi::rules {
 
@@ -210,6 +211,43 @@ constexpr Rule eeprom_boot_strap{
     .check = check_boot_strap,
 };
 
+// ---- eeprom-boot-mailbox-overlap ------------------------------------------------------------
+
+void check_boot_mailbox_overlap(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom || !device->eeprom->boot_strap) continue;
+        const HexData& data = *device->eeprom->boot_strap;
+        const auto bytes = data.bytes();
+        if (!bytes || bytes->size() != boot_strap_bytes) continue;  // eeprom-hex's or eeprom-boot-strap's
+        const auto word = [&](std::size_t i) { return std::uint32_t((*bytes)[2 * i]) | std::uint32_t((*bytes)[2 * i + 1]) << 8; };
+        const std::uint32_t out_start = word(0), out_size = word(1), in_start = word(2), in_size = word(3);
+        if (out_size == 0 || in_size == 0) continue;  // a direction without boot mailbox
+        if (out_start + out_size <= in_start || in_start + in_size <= out_start) continue;
+        const auto range = [](std::uint32_t start, std::uint32_t size) {
+            return format_hex(start, 4) + ".." + format_hex(start + size - 1, 4);
+        };
+        context.report(data.pos, device_label(*device) + ": the boot mailboxes of BootStrap overlap: out (master -> slave) " +
+                                     range(out_start, out_size) + ", in (slave -> master) " + range(in_start, in_size) +
+                                     "; in BOOT the master places SM0 and SM1 there, and the ESC would let them share memory");
+    }
+}
+
+constexpr Rule eeprom_boot_mailbox_overlap{
+    .id = "eeprom-boot-mailbox-overlap",
+    .default_severity = Severity::error,
+    .summary = "Eeprom BootStrap whose receive and send boot mailboxes overlap",
+    .rationale =
+        "BootStrap gives the boot mailboxes as SII words 0x14-0x17: receive (master -> slave) offset and size, send "
+        "offset and size (ETG.2010). For BOOT the master programs SM0 and SM1 with them instead of the standard "
+        "mailbox, so two overlapping ranges make the two SyncManagers share memory, as sm-overlap reports for the "
+        "standard ones: a firmware download over FoE corrupts its own answers, and firmware that checks the SM "
+        "configuration refuses the BOOT state (AL status 0x0015 invalid boot mailbox configuration). A size of 0 "
+        "leaves that direction unused and is not compared.",
+    .bad_example = "<BootStrap>0010000200110002</BootStrap> (out #x1000..#x11FF, in #x1100..#x12FF)",
+    .good_example = "<BootStrap>0010000200120002</BootStrap> (out #x1000..#x11FF, in #x1200..#x13FF)",
+    .check = check_boot_mailbox_overlap,
+};
+
 // ---- eeprom-category ------------------------------------------------------------------------
 
 void check_category(const EsiDocument& document, RuleContext& context) {
@@ -252,6 +290,7 @@ void add_eeprom(std::vector<Rule>& out) {
         eeprom_hex,
         eeprom_config_data,
         eeprom_boot_strap,
+        eeprom_boot_mailbox_overlap,
         eeprom_category,
     });
 }
