@@ -7,8 +7,9 @@
 // watchdog trigger, bit 7 reserved. The Sm order gives the SM number: the n-th Sm is SMn.
 //
 // The file stays whole although it is past 500 lines: it is the sm family's catalogue, each rule's
-// Rule constant right below its check (areas.hpp), and the rules share the ControlByte and SM size
-// helpers below; a split by topic would separate rules from the helpers they use together.
+// Rule constant right below its check (areas.hpp), and the rules share the ControlByte helpers
+// below (the SM memory layout they share with rules_sm_esc.cpp is in sm_memory.hpp); a split by
+// topic would separate rules from the helpers they use together.
 #include <algorithm>
 #include <string>
 
