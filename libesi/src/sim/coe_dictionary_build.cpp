@@ -1,0 +1,208 @@
+// The run-time dictionary from the model (coe_dictionary_build.hpp).
+
+#include "sim/coe_dictionary_build.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "esi/derive/derive.hpp"
+#include "esi/model/object_layout.hpp"
+
+namespace esi::sim {
+
+namespace {
+
+// ESI Flags/Access with @ReadRestrictions/@WriteRestrictions (ETG.2000 AccessType): "ro", "rw",
+// "wo", restricted to "PreOP", "SafeOP", "OP" or their combinations joined by '_'.
+std::uint16_t state_bits(const std::optional<std::string>& restriction, std::uint16_t all) {
+    if (!restriction || restriction->empty()) return all;
+    const std::string& r = *restriction;
+    const std::uint16_t lowest = all & static_cast<std::uint16_t>(-all);  // read_preop or write_preop
+    std::uint16_t out = 0;
+    if (r.find("PreOP") != std::string::npos) out |= lowest;
+    if (r.find("SafeOP") != std::string::npos) out |= static_cast<std::uint16_t>(lowest << 1);
+    // "OP" alone, or "_OP" after another state; "PreOP"/"SafeOP" contain "OP" too.
+    if (r == "OP" || r.ends_with("_OP")) out |= static_cast<std::uint16_t>(lowest << 2);
+    return out;
+}
+
+std::uint16_t access_of(const ObjectFlags* flags) {
+    std::uint16_t out = 0;
+    const std::string access = flags && flags->access ? *flags->access : "ro";
+    if (access == "ro" || access == "rw")
+        out |= state_bits(flags ? flags->access_read_restrictions : std::nullopt, access_bit::read_all);
+    if (access == "rw" || access == "wo")
+        out |= state_bits(flags ? flags->access_write_restrictions : std::nullopt, access_bit::write_all);
+    if (flags && flags->pdo_mapping) {
+        const std::string& m = *flags->pdo_mapping;
+        if (m.find_first_of("Rr") != std::string::npos) out |= access_bit::rx_mappable;
+        if (m.find_first_of("Tt") != std::string::npos) out |= access_bit::tx_mappable;
+    }
+    if (flags && flags->backup.value_or(0) != 0) out |= access_bit::backup;
+    if (flags && flags->setting.value_or(0) != 0) out |= access_bit::setting;
+    return out;
+}
+
+std::vector<std::uint8_t> number_bytes(const Number& number, std::size_t size) {
+    std::vector<std::uint8_t> out(size, 0);
+    const std::uint64_t bits = number.bits();
+    for (std::size_t i = 0; i < size; ++i) out[i] = i < 8 ? static_cast<std::uint8_t>(bits >> (8 * i)) : (number.negative ? 0xFF : 0);
+    return out;
+}
+
+// The default of an entry in CoE's byte order: DefaultData as written (ESI hexBinary is the
+// transfer order), else DefaultValue, else DefaultString; zeros where the model gives none.
+std::vector<std::uint8_t> default_bytes(const ObjectEntry& entry) {
+    const std::size_t size = (entry.bit_size + 7u) / 8u;
+    std::vector<std::uint8_t> out(size, 0);
+    const bool is_string = entry.basic && (entry.basic->type_class == TypeClass::visible_string ||
+                                           entry.basic->type_class == TypeClass::unicode_string);
+    auto from = [&](const std::optional<HexData>& data, const std::optional<Number>& value,
+                    const std::optional<std::string>& text) -> bool {
+        if (data) {
+            if (auto bytes = data->bytes()) {
+                std::copy_n(bytes->begin(), std::min(bytes->size(), size), out.begin());
+                return true;
+            }
+        }
+        if (value && !is_string) {
+            out = number_bytes(*value, size);
+            return true;
+        }
+        if (text && is_string) {
+            std::copy_n(text->begin(), std::min(text->size(), size), out.begin());
+            return true;
+        }
+        return false;
+    };
+    if (entry.info && from(entry.info->default_data, entry.info->default_value, entry.info->default_string)) return out;
+    if (entry.type_item) from(entry.type_item->default_data, entry.type_item->default_value, entry.type_item->default_string);
+    return out;
+}
+
+CoeObject runtime_object(const DataTypeIndex& types, const Object& object) {
+    const ObjectLayout layout = layout_of(types, object);
+    CoeObject out;
+    out.index = static_cast<std::uint16_t>(object.index);
+    out.name = primary_text(object.names);
+    out.code = layout.code == ObjectCode::var ? object_code::var
+               : layout.code == ObjectCode::array ? object_code::array
+                                                  : object_code::record;
+    const ResolvedType type = resolve_type(types, object.type);
+    if (type.basic) out.data_type = type.basic->coe_code;
+    else if (type.definition && type.definition->index) out.data_type = static_cast<std::uint16_t>(*type.definition->index);
+    for (const ObjectEntry& e : layout.entries) {
+        if (e.subindex > 255) continue;
+        CoeEntry entry;
+        entry.subindex = static_cast<std::uint8_t>(e.subindex);
+        entry.name = e.name.empty() ? out.name : e.name;
+        entry.basic = e.basic;
+        entry.data_type = e.basic ? e.basic->coe_code : 0;
+        entry.bit_size = static_cast<std::uint32_t>(std::min<std::uint64_t>(e.bit_size, 0xFFFF * 8u));
+        entry.bit_offset = static_cast<std::uint32_t>(std::min<std::uint64_t>(e.bit_offset, 0xFFFF * 8u));
+        entry.access = access_of(e.flags);
+        entry.default_value = default_bytes(e);
+        entry.value = entry.default_value;
+        out.entries.push_back(std::move(entry));
+    }
+    std::sort(out.entries.begin(), out.entries.end(), [](const CoeEntry& a, const CoeEntry& b) { return a.subindex < b.subindex; });
+    return out;
+}
+
+// Objects for PDO entries no Dictionary declares: what a master can see of them is the entry's
+// index, sub-index, size, type and name, and that it is mapped in that direction.
+void add_objects_from_pdo_entries(const Device& device, CoeDictionary& dictionary) {
+    struct Named {
+        const PdoEntry* entry;
+        PdoDirection direction;
+    };
+    std::map<std::uint32_t, std::map<std::uint32_t, Named>> missing;
+    for (const auto* list : {&device.rx_pdos, &device.tx_pdos})
+        for (const Pdo& pdo : *list)
+            for (const PdoEntry& e : pdo.entries)
+                if (!e.is_padding() && !dictionary.find(e.index) && e.effective_subindex() <= 255 && e.bit_len > 0)
+                    missing[e.index].emplace(e.effective_subindex(), Named{&e, pdo.direction});
+    for (const auto& [index, entries] : missing) {
+        if (index > 0xFFFF) continue;
+        CoeObject o;
+        o.index = static_cast<std::uint16_t>(index);
+        o.from_model = false;
+        const bool var = entries.size() == 1 && entries.begin()->first == 0;
+        o.code = var ? object_code::var : object_code::record;
+        o.name = primary_text(entries.begin()->second.entry->names);
+        std::uint32_t offset = var ? 0 : 16;
+        if (!var) {
+            CoeEntry sub0;
+            sub0.name = "SubIndex 000";
+            sub0.basic = find_basic_type("USINT");
+            sub0.data_type = sub0.basic ? sub0.basic->coe_code : 5;
+            sub0.bit_size = 8;
+            sub0.access = access_bit::read_all;
+            sub0.default_value = {static_cast<std::uint8_t>(entries.rbegin()->first)};
+            sub0.value = sub0.default_value;
+            o.entries.push_back(std::move(sub0));
+        }
+        for (const auto& [subindex, named] : entries) {
+            if (!var && subindex == 0) continue;
+            CoeEntry e;
+            e.subindex = static_cast<std::uint8_t>(subindex);
+            e.name = primary_text(named.entry->names);
+            e.basic = named.entry->data_type ? find_basic_type(*named.entry->data_type) : nullptr;
+            e.data_type = e.basic ? e.basic->coe_code : 0;
+            e.bit_size = named.entry->bit_len;
+            if (e.bit_size >= 8 && offset % 8 != 0) offset += 8 - offset % 8;
+            e.bit_offset = offset;
+            offset += e.bit_size;
+            e.access = named.direction == PdoDirection::rx
+                           ? access_bit::read_all | access_bit::write_all | access_bit::rx_mappable
+                           : access_bit::read_all | access_bit::tx_mappable;
+            e.default_value.assign(e.byte_size(), 0);
+            e.value = e.default_value;
+            o.entries.push_back(std::move(e));
+        }
+        if (var) o.data_type = o.entries.front().data_type;
+        dictionary.add(std::move(o));
+    }
+}
+
+}  // namespace
+
+DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics) {
+    DeviceModel model;
+    model.device = device;
+    model.vendor_id = info.vendor ? info.vendor->id.value_or(0) : 0;
+    Device& d = model.device;
+    model.dictionary_from_model = d.dictionary() != nullptr;
+    // The objects that follow from the rest of the device, added only where the model has none
+    // (derivation never replaces what a source declares). A device without CoE gets them too:
+    // the stack lays out its process image from 0x1C1x and 0x16xx/0x1Axx like any other.
+    if (!d.dictionary()) {
+        if (d.profiles.empty()) d.profiles.emplace_back();
+        d.profiles.front().dictionary.emplace();
+    }
+    DeviceIntent intent;
+    intent.options = DeriveOptions::none();
+    intent.options.identity_object = intent.options.device_type_object = true;
+    intent.options.mapping_objects = intent.options.assignment_objects = intent.options.sm_types_object = true;
+    intent.vendor_id = model.vendor_id;
+    Diagnostics derived;
+    derive_device(d, intent, {}, derived);
+    // Derivation reports contradictions of the source (lint's business); the stack answers what
+    // the objects it could build say, so its findings are not errors here.
+    (void)derived;
+    (void)diagnostics;
+
+    if (const Dictionary* dictionary = d.dictionary()) {
+        const DataTypeIndex types(dictionary);
+        for (const Object& object : dictionary->objects) {
+            if (object.index > 0xFFFF) continue;
+            CoeObject o = runtime_object(types, object);
+            o.from_model = model.dictionary_from_model && device.dictionary() && device.dictionary()->find_object(object.index);
+            model.dictionary.add(std::move(o));
+        }
+    }
+    add_objects_from_pdo_entries(d, model.dictionary);
+    return model;
+}
+
+}  // namespace esi::sim
