@@ -60,6 +60,8 @@ int esi_soes_set (uint16_t index, uint8_t subindex, uint64_t value)
 {
    const _objd *o = find (index, subindex);
    if (o == NULL) return -1;
+   /* Only the object's own bits: SOES packs the low bitlength bits into the process data. */
+   if (o->bitlength < 64) value &= (UINT64_C (1) << o->bitlength) - 1u;
    if (o->bitlength <= 8) *(uint8_t *)o->data = (uint8_t)value;
    else if (o->bitlength <= 16) *(uint16_t *)o->data = (uint16_t)value;
    else if (o->bitlength <= 32) *(uint32_t *)o->data = (uint32_t)value;
