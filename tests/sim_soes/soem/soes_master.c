@@ -6,8 +6,8 @@
  *
  *   soes_master IFACE [--cycles N] [--state-timeout-ms T] [--sdo-write SLAVE:INDEX:SUB:BYTES:VALUE]...
  *
- * --sdo-write  an expedited SDO download in PREOP before the mapping is read (hex numbers; SLAVE is
- *              the 1-based SOEM position); the abort code of each is reported.
+ * --sdo-write  an expedited SDO download in PREOP (SOEM's PO2SOconfig hook, before the mapping is
+ *              read; hex numbers, SLAVE is the 1-based SOEM position); the abort code of each is reported.
  * When built with ESI_ENI_TABLE the ENI start-up table eniconv wrote is applied (context.ENI).
  */
 #include "soem/soem.h"
@@ -28,7 +28,11 @@ struct sdo_write
    uint16 slave, index;
    uint8 sub, bytes;
    uint32 value;
+   int done;
+   uint32 abort_code;
 };
+static struct sdo_write writes[256];
+static int nwrites;
 
 static uint8 pattern(int cycle, uint32 i) { return (uint8)(cycle * 7 + i * 13 + 1); }
 
@@ -39,13 +43,16 @@ static void print_hex(const uint8 *data, uint32 size)
    putchar('"');
 }
 
+/* The SDO abort code of the last failed transfer, or 0x100 + SOEM's error type for failures
+ * other than an abort (mailbox error, unexpected frame). */
 static uint32 last_abort(void)
 {
    uint32 code = 0;
    while (ecx_iserror(&context))
    {
       ec_errort error;
-      if (ecx_poperror(&context, &error) && error.Etype == EC_ERR_TYPE_SDO_ERROR) code = (uint32)error.AbortCode;
+      if (!ecx_poperror(&context, &error)) break;
+      code = error.Etype == EC_ERR_TYPE_SDO_ERROR ? (uint32)error.AbortCode : 0x100u + (uint32)error.Etype;
    }
    return code;
 }
@@ -90,6 +97,21 @@ static void print_pdo_assignment(uint16 slave)
    last_abort();
 }
 
+/* PREOP to SAFEOP, before ecx_config_map_group reads the mapping over CoE: where SOEM users
+ * configure a slave (the ENI's PS commands run just before). */
+static int write_sdos(ecx_contextt *ctx, uint16 slave)
+{
+   for (int i = 0; i < nwrites; ++i)
+   {
+      if (writes[i].slave != slave) continue;
+      uint32 value = writes[i].value;
+      int wkc = ecx_SDOwrite(ctx, slave, writes[i].index, writes[i].sub, FALSE, writes[i].bytes, &value, EC_TIMEOUTRXM);
+      writes[i].abort_code = last_abort();
+      writes[i].done = wkc > 0;
+   }
+   return 0;
+}
+
 int main(int argc, char **argv)
 {
    if (argc < 2)
@@ -97,8 +119,7 @@ int main(int argc, char **argv)
       fprintf(stderr, "usage: soes_master IFACE [--cycles N] [--state-timeout-ms T] [--sdo-write S:I:SUB:BYTES:VALUE]...\n");
       return 2;
    }
-   static struct sdo_write writes[256];
-   int cycles = 1000, state_timeout_ms = 4000, nwrites = 0;
+   int cycles = 1000, state_timeout_ms = 4000;
    for (int i = 2; i < argc; ++i)
    {
       if (!strcmp(argv[i], "--cycles") && i + 1 < argc) cycles = atoi(argv[++i]);
@@ -107,7 +128,7 @@ int main(int argc, char **argv)
       {
          unsigned s, index, sub, bytes, value;
          if (sscanf(argv[++i], "%x:%x:%x:%x:%x", &s, &index, &sub, &bytes, &value) != 5) return 2;
-         writes[nwrites++] = (struct sdo_write){(uint16)s, (uint16)index, (uint8)sub, (uint8)bytes, value};
+         writes[nwrites++] = (struct sdo_write){(uint16)s, (uint16)index, (uint8)sub, (uint8)bytes, value, 0, 0};
       }
       else return 2;
    }
@@ -127,18 +148,13 @@ int main(int argc, char **argv)
       ecx_close(&context);
       return 0;
    }
+   for (int s = 1; s <= context.slavecount; ++s) context.slavelist[s].PO2SOconfig = write_sdos;
+   ecx_config_map_group(&context, io_map, 0);
    printf(",\"sdo_writes\":[");
    for (int i = 0; i < nwrites; ++i)
-   {
-      uint32 value = writes[i].value;
-      int wkc = ecx_SDOwrite(&context, writes[i].slave, writes[i].index, writes[i].sub, FALSE, writes[i].bytes, &value,
-                             EC_TIMEOUTRXM);
-      uint32 abort_code = last_abort();
       printf("%s{\"index\":%u,\"sub\":%u,\"ok\":%s,\"abort\":%u}", i ? "," : "", writes[i].index, writes[i].sub,
-             wkc > 0 && !abort_code ? "true" : "false", abort_code);
-   }
+             writes[i].done && !writes[i].abort_code ? "true" : "false", writes[i].abort_code);
    printf("]");
-   ecx_config_map_group(&context, io_map, 0);
    ec_groupt *group = &context.grouplist[0];
    int expected_wkc = group->outputsWKC * 2 + group->inputsWKC;
    ecx_statecheck(&context, 0, EC_STATE_SAFE_OP, state_timeout_ms * 1000);
