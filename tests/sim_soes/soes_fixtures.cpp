@@ -1,8 +1,10 @@
 #include "sim_soes/soes_fixtures.hpp"
 
 #include <fmt/format.h>
+#include <gtest/gtest.h>
 
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "esi/load/document.hpp"
@@ -124,7 +126,7 @@ SoesFirmware build_soes_firmware(const fs::path& source, const fs::path& dir, bo
 
     // SOES's own warning flags (its cmake/Linux.cmake), the core's files (soes/CMakeLists.txt).
     fw.library = dir / (source.stem().string() + (sanitize ? "-asan.so" : ".so"));
-    std::vector<std::string> argv{"cc", "-shared", "-fPIC", "-g", "-O1", "-Wall", "-Wextra", "-Wconversion",
+    std::vector<std::string> argv{"cc", "-shared", "-fPIC", "-g", "-O0", "-Wall", "-Wextra", "-Wconversion",
                                   "-Wno-unused-parameter", "-Werror"};
     if (sanitize) argv.insert(argv.end(), {"-fsanitize=address", "-fno-omit-frame-pointer"});
     for (const fs::path& d : {fw.generated, soes_core(), soes_core() / "include" / "sys" / "gcc", firmware_dir()})
@@ -138,6 +140,19 @@ SoesFirmware build_soes_firmware(const fs::path& source, const fs::path& dir, bo
     if (cc.exit_code != 0) fw.error = "cc: " + cc.err;
     if (sanitize && fw.error.empty() && asan_runtime().empty()) fw.error = "no AddressSanitizer runtime for cc";
     return fw;
+}
+
+const SoesFirmware& soes_firmware(const fs::path& source, bool sanitize) {
+    static TempDir dir;
+    static std::map<std::pair<fs::path, bool>, SoesFirmware> built;
+    const auto key = std::pair{source, sanitize};
+    auto it = built.find(key);
+    if (it == built.end()) {
+        const fs::path sub = dir / (sanitize ? "asan" : "plain");
+        fs::create_directories(sub);
+        it = built.emplace(key, build_soes_firmware(source, sub, sanitize)).first;
+    }
+    return it->second;
 }
 
 std::vector<SoesStepResult> run_soes_session(const std::vector<SoesStep>& steps) {
@@ -191,6 +206,47 @@ std::uint64_t image_bits(const std::string& hex, std::uint32_t offset, std::uint
         if (b >> (bit % 8) & 1) value |= std::uint64_t{1} << i;
     }
     return value;
+}
+
+namespace {
+
+std::uint64_t hex_number(const nlohmann::json& v) { return std::stoull(v.get<std::string>(), nullptr, 16); }
+
+std::map<std::pair<std::uint64_t, std::uint64_t>, nlohmann::json> objects_by_index(const nlohmann::json& list) {
+    std::map<std::pair<std::uint64_t, std::uint64_t>, nlohmann::json> out;
+    for (const auto& o : list) out[{o["index"].get<std::uint64_t>(), o["sub"].get<std::uint64_t>()}] = o;
+    return out;
+}
+
+}  // namespace
+
+void expect_variables_match(const nlohmann::json& process_image, int position, const nlohmann::json& master,
+                            const nlohmann::json& host_slave) {
+    const auto outputs = objects_by_index(host_slave["outputs"]);
+    const auto inputs = objects_by_index(host_slave["inputs"]);
+    int checked = 0;
+    for (const auto& v : process_image["variables"]) {
+        if (v["position"] != position) continue;
+        SCOPED_TRACE(v["name"].get<std::string>());
+        const bool output = v["direction"] == "output";
+        const auto& found = output ? outputs : inputs;
+        const auto it = found.find({hex_number(v["index"]), hex_number(v["subindex"])});
+        ASSERT_NE(it, found.end()) << "SOES has no object for the variable";
+        ASSERT_TRUE(it->second.contains("value")) << "SOES never received outputs in OP";
+        const auto offset = v["byte_offset"].get<std::uint32_t>() * 8 + v["bit_offset"].get<std::uint32_t>();
+        const auto bits = v["bit_size"].get<std::uint32_t>();
+        const std::string& image = master[output ? "outputs" : "inputs"].get_ref<const std::string&>();
+        ASSERT_LE((offset + bits + 7) / 8, image.size() / 2) << "the variable lies past the master's image";
+        EXPECT_EQ(image_bits(image, offset, bits), it->second["value"].get<std::uint64_t>())
+            << "at bit " << offset << ", " << bits << " bits";
+        ++checked;
+    }
+    // Only a slave without process data (the modular coupler's SOES set, which holds no
+    // modules) has nothing to check.
+    for (const auto& slave : process_image["slaves"])
+        if (slave["position"] == position && (slave["output_bytes"] > 0 || slave["input_bytes"] > 0)) {
+            EXPECT_GT(checked, 0);
+        }
 }
 
 }  // namespace esi::test

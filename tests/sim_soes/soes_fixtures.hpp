@@ -34,6 +34,10 @@ struct SoesFirmware {
 [[nodiscard]] SoesFirmware build_soes_firmware(const std::filesystem::path& source, const std::filesystem::path& dir,
                                                bool sanitize = false);
 
+// The same, built once per test program run (in a directory that lives as long as it): the
+// tests share each sample's firmware instead of compiling the SOES core again.
+[[nodiscard]] const SoesFirmware& soes_firmware(const std::filesystem::path& source, bool sanitize = false);
+
 struct SoesStep {
     std::vector<std::string> host_args;    // after `esi_soes_host --iface v1`
     std::vector<std::string> master_args;  // after `MASTER v0`
@@ -52,6 +56,14 @@ struct SoesStepResult {
 
 // The `bits` bits at bit `offset` of the little-endian image in `hex` (what a variable holds).
 [[nodiscard]] std::uint64_t image_bits(const std::string& hex, std::uint32_t offset, std::uint32_t bits);
+
+// Every variable of `process_image` (esi-net's process_image.json) at slave `position`: the bits
+// the master holds at its offset (`master`: esi_soes_master's report) equal the value of the
+// object in SOES (`host_slave`: the host's report of that slave; outputs: what SOES received
+// last in OP, inputs: what the host set). Expects at least one variable when the slave has
+// process data.
+void expect_variables_match(const nlohmann::json& process_image, int position, const nlohmann::json& master,
+                            const nlohmann::json& host_slave);
 
 }  // namespace esi::test
 

@@ -53,8 +53,7 @@ std::vector<std::string> remap_args(const Remap& remap) {
 
 TEST(SoesRemap, SoesAcceptsAPaddedAndAMaximalRemapAndTheProcessImageFollows) {
     ESI_REQUIRE_SOES_ON_SIM();
-    TempDir dir;
-    const SoesFirmware fw = build_soes_firmware(source_dir() / "samples" / "inverter-stoeber-mds5000.yaml", dir.path(), true);
+    const SoesFirmware& fw = soes_firmware(source_dir() / "samples" / "inverter-stoeber-mds5000.yaml", true);
     if (fw.error.find("AddressSanitizer") != std::string::npos || fw.error.find("asan") != std::string::npos)
         GTEST_SKIP() << "cc cannot build with AddressSanitizer here: " << fw.error;
     ASSERT_EQ(fw.error, "");

@@ -5,7 +5,13 @@
  * the PDO assignment and mapping over CoE and prints one JSON object on stdout:
  *
  *   soes_master IFACE [--cycles N] [--state-timeout-ms T] [--sdo-write SLAVE:INDEX:SUB:BYTES:VALUE]...
+ *               [--overlap] [--dc-sync0 SLAVE:CYCLE_NS]...
  *
+ * --overlap    maps in overlapped mode (ecx_contextt.overlappedMode, SOEM's internal
+ *              ecx_config_overlap_map_group): each slave's inputs and outputs share their logical
+ *              start, as in esi-net's ENI and process_image.json.
+ * --dc-sync0   configures distributed clocks (ecx_configdc) and activates SYNC0 on the slave
+ *              (ecx_dcsync0), what eniconv's table does not carry from the ENI.
  * --sdo-write  an expedited SDO download in PREOP (SOEM's PO2SOconfig hook, before the mapping is
  *              read; hex numbers, SLAVE is the 1-based SOEM position); the abort code of each is reported.
  * When built with ESI_ENI_TABLE the ENI start-up table eniconv wrote is applied (context.ENI).
@@ -112,8 +118,16 @@ static int write_sdos(ecx_contextt *ctx, uint16 slave)
    return 0;
 }
 
+struct dc_sync
+{
+   uint16 slave;
+   uint32 cycle_ns;
+};
+
 int main(int argc, char **argv)
 {
+   static struct dc_sync syncs[64];
+   int nsyncs = 0, overlap = 0;
    if (argc < 2)
    {
       fprintf(stderr, "usage: soes_master IFACE [--cycles N] [--state-timeout-ms T] [--sdo-write S:I:SUB:BYTES:VALUE]...\n");
@@ -129,6 +143,13 @@ int main(int argc, char **argv)
          unsigned s, index, sub, bytes, value;
          if (sscanf(argv[++i], "%x:%x:%x:%x:%x", &s, &index, &sub, &bytes, &value) != 5) return 2;
          writes[nwrites++] = (struct sdo_write){(uint16)s, (uint16)index, (uint8)sub, (uint8)bytes, value, 0, 0};
+      }
+      else if (!strcmp(argv[i], "--overlap")) overlap = 1;
+      else if (!strcmp(argv[i], "--dc-sync0") && i + 1 < argc && nsyncs < 64)
+      {
+         unsigned s, cycle;
+         if (sscanf(argv[++i], "%u:%u", &s, &cycle) != 2) return 2;
+         syncs[nsyncs++] = (struct dc_sync){(uint16)s, cycle};
       }
       else return 2;
    }
@@ -149,7 +170,12 @@ int main(int argc, char **argv)
       return 0;
    }
    for (int s = 1; s <= context.slavecount; ++s) context.slavelist[s].PO2SOconfig = write_sdos;
+   /* SOEM 2.x keeps ecx_config_overlap_map_group internal: ecx_config_map_group takes it when
+    * the context is in overlapped mode. */
+   context.overlappedMode = overlap ? TRUE : FALSE;
    ecx_config_map_group(&context, io_map, 0);
+   if (nsyncs > 0) ecx_configdc(&context);
+   for (int i = 0; i < nsyncs; ++i) ecx_dcsync0(&context, syncs[i].slave, TRUE, syncs[i].cycle_ns, 0);
    printf(",\"sdo_writes\":[");
    for (int i = 0; i < nwrites; ++i)
       printf("%s{\"index\":%u,\"sub\":%u,\"ok\":%s,\"abort\":%u}", i ? "," : "", writes[i].index, writes[i].sub,
