@@ -7,6 +7,8 @@
  * --echo   checks that each slave's inputs repeat its outputs of the cycle before (esi-sim --echo)
  * --dc     configures distributed clocks (ecx_configdc) before SAFEOP
  * --sdo    reads every object the slaves list over SDO Information, each sub-index by ecx_SDOread
+ * --init POS:INDEX:SUB:CA:HEX  an SDO download in PREOP->SAFEOP before the mapping is read (an ENI's
+ *          CoE InitCmds for transition PS; POS is the slave's 0-based position, CA 1 for complete access)
  * --scan-only  stops after ecx_config_init (and reports the ESC's EEPROM and PDI state)
  * --state-timeout-ms T  how long to wait for SAFEOP, and for OP (default 4000)
  */
@@ -19,6 +21,50 @@
 
 static ecx_contextt context;
 static uint8 io_map[65536];
+
+#define MAX_INIT_CMDS 256
+static struct
+{
+   int position, index, sub, complete_access, size;
+   uint8 data[512];
+} init_cmds[MAX_INIT_CMDS];
+static int init_cmd_count, init_cmd_failures;
+
+static int parse_init(const char *text)
+{
+   if (init_cmd_count >= MAX_INIT_CMDS) return 0;
+   char hex[1100] = {0};
+   int position, index, sub, ca;
+   if (sscanf(text, "%d:%i:%i:%d:%1099s", &position, &index, &sub, &ca, hex) != 5) return 0;
+   int n = (int)strlen(hex) / 2;
+   if (n > 512) return 0;
+   for (int i = 0; i < n; ++i)
+   {
+      unsigned byte;
+      sscanf(hex + 2 * i, "%2x", &byte);
+      init_cmds[init_cmd_count].data[i] = (uint8)byte;
+   }
+   init_cmds[init_cmd_count].position = position;
+   init_cmds[init_cmd_count].index = index;
+   init_cmds[init_cmd_count].sub = sub;
+   init_cmds[init_cmd_count].complete_access = ca;
+   init_cmds[init_cmd_count].size = n;
+   ++init_cmd_count;
+   return 1;
+}
+
+/* SOEM calls this for each slave in PREOP, before it reads the slave's PDO mapping. */
+static int apply_init_cmds(ecx_contextt *ctx, uint16 slave)
+{
+   for (int i = 0; i < init_cmd_count; ++i)
+   {
+      if (init_cmds[i].position != slave - 1) continue;
+      int wkc = ecx_SDOwrite(ctx, slave, (uint16)init_cmds[i].index, (uint8)init_cmds[i].sub,
+                             init_cmds[i].complete_access ? TRUE : FALSE, init_cmds[i].size, init_cmds[i].data, EC_TIMEOUTRXM);
+      if (wkc <= 0) ++init_cmd_failures;
+   }
+   return 1;
+}
 
 static void print_string(const char *s)
 {
@@ -152,6 +198,14 @@ int main(int argc, char **argv)
       else if (!strcmp(argv[i], "--dc")) dc = 1;
       else if (!strcmp(argv[i], "--sdo")) sdo = 1;
       else if (!strcmp(argv[i], "--scan-only")) scan_only = 1;
+      else if (!strcmp(argv[i], "--init") && i + 1 < argc)
+      {
+         if (!parse_init(argv[++i]))
+         {
+            fprintf(stderr, "soem_master: bad --init %s\n", argv[i]);
+            return 2;
+         }
+      }
       else if (!strcmp(argv[i], "--state-timeout-ms") && i + 1 < argc) state_timeout_ms = atoi(argv[++i]);
    }
    const double start = now_ms();
@@ -170,6 +224,7 @@ int main(int argc, char **argv)
       ecx_close(&context);
       return 0;
    }
+   for (int s = 1; s <= context.slavecount; ++s) context.slavelist[s].PO2SOconfig = apply_init_cmds;
    ecx_config_map_group(&context, io_map, 0);
    if (dc) ecx_configdc(&context);
    ec_groupt *group = &context.grouplist[0];
@@ -211,7 +266,8 @@ int main(int argc, char **argv)
    ecx_readstate(&context);
    printf(",\"expected_wkc\":%d,\"op\":%s,\"to_op_ms\":%.1f,\"cycles\":%d,\"wkc_ok\":%d,\"echo_checked\":%d,\"echo_ok\":%d",
           expected_wkc, op ? "true" : "false", to_op, ran, wkc_ok, echo_checked, echo_ok);
-   printf(",\"obytes\":%u,\"ibytes\":%u", group->Obytes, group->Ibytes);
+   printf(",\"obytes\":%u,\"ibytes\":%u,\"init_cmds\":%d,\"init_cmd_failures\":%d", group->Obytes, group->Ibytes,
+          init_cmd_count, init_cmd_failures);
    print_slaves();
    if (sdo) read_dictionaries();
    printf("}\n");
