@@ -1,8 +1,8 @@
 // esi-net's ENI applied by SOEM 2.x to the sample line (issue 21): samples/networks/line.yaml →
 // esi-net build → SOEM's eniconv.py → a SOEM master built with that start-up table
 // (ecx_contextt.ENI) brings the simulated line to OP. The digital I/O, the servo and the encoder
-// run their SOES firmware (esi-gen's SOES set), the modular coupler esi-sim's model slave (the
-// SOES set holds no modules). What eniconv leaves out the master adds as a SOEM user must
+// run their SOES firmware (esi-gen's SOES set), the modular coupler with its three modules
+// esi-sim's model slave (the SOES set holds no modules). What eniconv leaves out the master adds as a SOEM user must
 // (docs/esi-net.md, "SOEM 2.x"): distributed clocks for the servo, and overlapped mapping, which
 // places every variable at the offset process_image.json states.
 
@@ -48,19 +48,11 @@ void enable_pdi(const fs::path& source, const fs::path& eeprom) {
     write_text(source, out);
 }
 
-// The line of samples/networks/line.yaml; without `modules`, the coupler's slots stay empty.
-void run_line(bool coupler_modules) {
+void run_line() {
     TempDir dir;
-    // A copy of the samples: the firmware devices get a PDI (below), the line maybe no modules.
+    // A copy of the samples, whose firmware devices get a PDI (below).
     fs::copy(source_dir() / "samples", dir / "samples", fs::copy_options::recursive);
     const fs::path network = dir / "samples/networks/line.yaml";
-    if (!coupler_modules) {
-        std::istringstream text(read_text(network));
-        std::string out, line;
-        while (std::getline(text, line))
-            if (line.find("modules: [") == std::string::npos) out += line + "\n";
-        write_text(network, out);
-    }
 
     // esi-net's files for the line, and the C eniconv writes from its ENI.
     const fs::path net = dir / "net";
@@ -158,10 +150,8 @@ void run_line(bool coupler_modules) {
     };
     EXPECT_EQ(pdos(m["slave"][2]["assign"]["7186"]), (std::vector<unsigned>{0x1600, 0x1601}));
     EXPECT_EQ(pdos(m["slave"][2]["assign"]["7187"]), (std::vector<unsigned>{0x1A00, 0x1A01}));
-    if (coupler_modules) {
-        EXPECT_EQ(pdos(m["slave"][0]["assign"]["7186"]), (std::vector<unsigned>{0x1601}));
-        EXPECT_EQ(pdos(m["slave"][0]["assign"]["7187"]), (std::vector<unsigned>{0x1A00, 0x1A02}));
-    }
+    EXPECT_EQ(pdos(m["slave"][0]["assign"]["7186"]), (std::vector<unsigned>{0x1601}));
+    EXPECT_EQ(pdos(m["slave"][0]["assign"]["7187"]), (std::vector<unsigned>{0x1A00, 0x1A02}));
 
     // The SOES slaves' variables, bit for bit at process_image.json's offsets.
     ASSERT_EQ(r.host->size(), soes_position.size());
@@ -181,17 +171,7 @@ void run_line(bool coupler_modules) {
 
 TEST(SoesLineEni, SoemAppliesEsiNetsEniAndPlacesEveryVariableWhereProcessImageJsonSays) {
     ESI_REQUIRE_ENICONV();
-    run_line(false);
-}
-
-// esi-sim's model slave has no module objects (0x1601 of slot 2, 0x1A00/0x1A02 of slots 1 and
-// 3), so it aborts the ENI's complete-access download of the coupler's 0x1C12; SOEM stops
-// applying the coupler's commands, maps no process data for it and every later slave moves 5
-// bytes down from where process_image.json has it. Disabled until the model slave emulates
-// modules (run with --gtest_also_run_disabled_tests).
-TEST(SoesLineEni, DISABLED_TheCouplersModulesAsTheEniAssignsThem) {
-    ESI_REQUIRE_ENICONV();
-    run_line(true);
+    run_line();
 }
 
 }  // namespace
