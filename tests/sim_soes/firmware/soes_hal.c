@@ -9,8 +9,9 @@
  * and last byte), so the HAL forwards accesses one to one and adds nothing. What it adds is what
  * SOES expects of every HAL it ships (the LAN9252 ones): after each access ESCvar.ALevent holds
  * the AL event request register 0x0220, because SOES polls that copy instead of the register.
- * It reads the raw request rather than Pdi::al_event(), which masks with 0x0204: SOES in polling
- * mode never writes the mask, and would then see no event at all.
+ * It reads the raw request rather than Pdi::al_event(), which masks with 0x0204: the mask gates
+ * the interrupt line (SOES's interrupt mode masks events while ecat_slv_worker serves them), not
+ * the events SOES's polling sees, and SOES's own HALs read 0x0220 unmasked too.
  */
 #include <string.h>
 
