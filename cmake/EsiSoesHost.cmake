@@ -19,8 +19,17 @@ if(TARGET esi_soem)
     set(soes_master_path $<TARGET_FILE:esi_soes_master>)
 endif()
 if(TARGET sim_soes_tests)
+    # The firmware is compiled with the tree's C compiler: in the sanitizer tree (ESI_SANITIZE) the
+    # host carries that compiler's AddressSanitizer runtime, and an instrumented firmware must
+    # match it.
+    if(ESI_SANITIZE)
+        set(host_sanitized 1)
+    else()
+        set(host_sanitized 0)
+    endif()
     target_compile_definitions(sim_soes_tests PRIVATE ESI_SOES_HOST="$<TARGET_FILE:esi_soes_host>"
-        ESI_SOES_MASTER="${soes_master_path}" ESI_SOEM_BUILD_DIR="${soem_build_dir}" ESI_SOEM_SOURCE_DIR="${ESI_SOEM_DIR}")
+        ESI_SOES_MASTER="${soes_master_path}" ESI_SOEM_BUILD_DIR="${soem_build_dir}" ESI_SOEM_SOURCE_DIR="${ESI_SOEM_DIR}"
+        ESI_SOES_CC="${CMAKE_C_COMPILER}" ESI_SOES_HOST_SANITIZED=${host_sanitized})
     add_dependencies(sim_soes_tests esi_soes_host)
     if(TARGET esi_soes_master)
         add_dependencies(sim_soes_tests esi_soes_master)
