@@ -4,6 +4,7 @@
 // the write mailbox, AL control writes, repeat requests and SyncManager rewrites, the slave polled
 // after each. Any input must leave the slave answering; never a crash, a hang, an out-of-bounds
 // access or an allocation that grows with a length field instead of the input.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
