@@ -7,6 +7,7 @@
 
 #include "esi/derive/derive.hpp"
 #include "esi/model/object_layout.hpp"
+#include "esi/net/default_slave.hpp"
 
 namespace esi::sim {
 
@@ -165,6 +166,39 @@ void add_objects_from_pdo_entries(const Device& device, CoeDictionary& dictionar
     }
 }
 
+// A modular device runs with the modules its slots hold by default: their PDOs join the device's
+// (indices moved by the slot increments, assigned to the SMs esi-net assigns them to), so the
+// mapping and assignment objects derived below describe the whole process image. The device's
+// own 0x1C1n objects describe the device without modules and are derived again.
+std::vector<net::ModuleObject> add_default_modules(const EtherCATInfo& info, const Device& original, Device& device) {
+    if (!original.slots || original.slots->slots.empty()) return {};
+    Diagnostics ignored;  // what esi-net would report is lint's and esi-net's business
+    net::DefaultSlave configured = net::configure_default_slave(info, original, ignored);
+    if (configured.slave.modules.empty()) return {};
+    for (const net::ConfiguredPdo& c : configured.slave.pdos) {
+        if (!c.module) continue;
+        Pdo pdo;
+        pdo.direction = c.direction;
+        pdo.index = c.index;
+        pdo.names.emplace_back().text = c.name;
+        pdo.fixed = c.fixed;
+        pdo.sm = c.sm;
+        for (const net::ConfiguredEntry& e : c.entries) {
+            PdoEntry entry;
+            entry.index = e.index;
+            entry.subindex = e.subindex;
+            entry.bit_len = e.bit_len;
+            entry.names.emplace_back().text = e.name;
+            if (!e.data_type.empty()) entry.data_type = e.data_type;
+            pdo.entries.push_back(std::move(entry));
+        }
+        (c.direction == PdoDirection::rx ? device.rx_pdos : device.tx_pdos).push_back(std::move(pdo));
+    }
+    if (Dictionary* d = device.dictionary() ? &*device.profiles.front().dictionary : nullptr)
+        std::erase_if(d->objects, [](const Object& o) { return o.index >= 0x1C10 && o.index <= 0x1C2F; });
+    return configured.module_objects;
+}
+
 }  // namespace
 
 DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics) {
@@ -180,6 +214,7 @@ DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, D
         if (d.profiles.empty()) d.profiles.emplace_back();
         d.profiles.front().dictionary.emplace();
     }
+    const std::vector<net::ModuleObject> module_objects = add_default_modules(info, device, d);
     DeviceIntent intent;
     intent.options = DeriveOptions::none();
     intent.options.identity_object = intent.options.device_type_object = true;
@@ -200,6 +235,12 @@ DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, D
             o.from_model = model.dictionary_from_model && device.dictionary() && device.dictionary()->find_object(object.index);
             model.dictionary.add(std::move(o));
         }
+    }
+    for (const net::ModuleObject& m : module_objects) {
+        if (m.index > 0xFFFF) continue;
+        CoeObject o = runtime_object(DataTypeIndex(m.dictionary), *m.object);
+        o.index = static_cast<std::uint16_t>(m.index);
+        model.dictionary.add(std::move(o));
     }
     add_objects_from_pdo_entries(d, model.dictionary);
     return model;
