@@ -168,13 +168,19 @@ void add_objects_from_pdo_entries(const Device& device, CoeDictionary& dictionar
 
 // A modular device runs with the modules its slots hold by default: their PDOs join the device's
 // (indices moved by the slot increments, assigned to the SMs esi-net assigns them to), so the
-// mapping and assignment objects derived below describe the whole process image. The device's
-// own 0x1C1n objects describe the device without modules and are derived again.
-std::vector<net::ModuleObject> add_default_modules(const EtherCATInfo& info, const Device& original, Device& device) {
-    if (!original.slots || original.slots->slots.empty()) return {};
+// mapping objects derived below include them; the assignment objects get esi-net's default
+// assignment (set_default_assignment).
+struct DefaultModules {
+    std::vector<net::ModuleObject> objects;
+    std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> assignment;  // SM, PDO indices
+};
+
+DefaultModules add_default_modules(const EtherCATInfo& info, const Device& original, Device& device) {
+    DefaultModules out;
+    if (!original.slots || original.slots->slots.empty()) return out;
     Diagnostics ignored;  // what esi-net would report is lint's and esi-net's business
     net::DefaultSlave configured = net::configure_default_slave(info, original, ignored);
-    if (configured.slave.modules.empty()) return {};
+    if (configured.slave.modules.empty()) return out;
     for (const net::ConfiguredPdo& c : configured.slave.pdos) {
         if (!c.module) continue;
         Pdo pdo;
@@ -194,9 +200,41 @@ std::vector<net::ModuleObject> add_default_modules(const EtherCATInfo& info, con
         }
         (c.direction == PdoDirection::rx ? device.rx_pdos : device.tx_pdos).push_back(std::move(pdo));
     }
-    if (Dictionary* d = device.dictionary() ? &*device.profiles.front().dictionary : nullptr)
-        std::erase_if(d->objects, [](const Object& o) { return o.index >= 0x1C10 && o.index <= 0x1C2F; });
-    return configured.module_objects;
+    for (const net::SmSetup& sm : configured.slave.sms) {
+        if (!sm.is_process_data()) continue;
+        std::vector<std::uint32_t> indices;
+        for (std::size_t p : sm.pdos) indices.push_back(configured.slave.pdos[p].index);
+        out.assignment.emplace_back(sm.number, std::move(indices));
+    }
+    out.objects = std::move(configured.module_objects);
+    return out;
+}
+
+// The assignment object of an SM set to `pdos`, as its value and its default; entries are added
+// (UINT, after the last) where the object has fewer than the assignment needs.
+void set_default_assignment(CoeDictionary& dictionary, std::uint32_t sm, const std::vector<std::uint32_t>& pdos) {
+    CoeObject* object = dictionary.find(0x1C10 + sm);
+    if (!object || object->entries.empty() || pdos.size() > 254) return;
+    for (std::uint32_t k = 1; k <= pdos.size(); ++k) {
+        if (object->entry(k)) continue;
+        CoeEntry e = object->entries.size() > 1 ? object->entries.back() : CoeEntry{};
+        e.subindex = static_cast<std::uint8_t>(k);
+        e.basic = find_basic_type("UINT");
+        e.data_type = 0x0006;
+        e.bit_size = 16;
+        e.bit_offset = object->entries.back().bit_offset + std::max<std::uint32_t>(object->entries.back().bit_size, 8);
+        if (e.bit_offset < 16) e.bit_offset = 16;
+        e.name = "SubIndex " + std::to_string(1000 + k).substr(1);
+        if (e.access == 0) e.access = access_bit::read_all | access_bit::write_preop;
+        e.value.assign(2, 0);
+        e.default_value = e.value;
+        object->entries.push_back(std::move(e));
+    }
+    for (CoeEntry& e : object->entries) {
+        if (e.subindex == 0) e.set_unsigned(pdos.size());
+        else e.set_unsigned(e.subindex <= pdos.size() ? pdos[e.subindex - 1u] : 0);
+        e.default_value = e.value;
+    }
 }
 
 }  // namespace
@@ -214,7 +252,7 @@ DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, D
         if (d.profiles.empty()) d.profiles.emplace_back();
         d.profiles.front().dictionary.emplace();
     }
-    const std::vector<net::ModuleObject> module_objects = add_default_modules(info, device, d);
+    const DefaultModules modules = add_default_modules(info, device, d);
     DeviceIntent intent;
     intent.options = DeriveOptions::none();
     intent.options.identity_object = intent.options.device_type_object = true;
@@ -236,12 +274,13 @@ DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, D
             model.dictionary.add(std::move(o));
         }
     }
-    for (const net::ModuleObject& m : module_objects) {
+    for (const net::ModuleObject& m : modules.objects) {
         if (m.index > 0xFFFF) continue;
         CoeObject o = runtime_object(DataTypeIndex(m.dictionary), *m.object);
         o.index = static_cast<std::uint16_t>(m.index);
         model.dictionary.add(std::move(o));
     }
+    for (const auto& [sm, pdos] : modules.assignment) set_default_assignment(model.dictionary, sm, pdos);
     add_objects_from_pdo_entries(d, model.dictionary);
     return model;
 }
