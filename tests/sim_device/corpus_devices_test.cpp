@@ -1,5 +1,5 @@
 // Catalogue devices from the corpus, run from their ESI alone on the model slave: brought to OP
-// the way SOEM configures a slave (mailbox from the SII header, the PDO sizes read over CoE from
+// the way SOEM configures a slave (the device's own CoE InitCmds for IP and PS sent in PREOP) (mailbox from the SII header, the PDO sizes read over CoE from
 // 0x1C00, 0x1C1n and the mapping objects, else from the SII's PDO categories), their dictionary
 // read completely over SDO (every readable entry answers with its size). Devices that cannot reach OP are listed with the AL status code.
 
@@ -60,6 +60,23 @@ std::string run_to_op(const EtherCATInfo& info, const Device& device) {
     } else if ((m.request_state(2) & 0x1F) != 2) {
         return "PREOP refused, code " + std::to_string(m.al_status_code());
     }
+    // The device's own CoE InitCmds for IP and PS, as a master sends them.
+    if (mailbox && device.mailbox->coe)
+        for (const InitCmd& cmd : device.mailbox->coe->init_cmds) {
+            const bool due = std::any_of(cmd.transitions.begin(), cmd.transitions.end(),
+                                         [](const Transition& t) { return t.text == "IP" || t.text == "PS"; });
+            const auto data = cmd.data.bytes();
+            if (!due || !cmd.index || !data || data->empty() || *cmd.index > 0xFFFF) continue;
+            const std::uint32_t abort = m.download(static_cast<std::uint16_t>(*cmd.index),
+                                                   static_cast<std::uint8_t>(cmd.subindex.value_or(0)), *data,
+                                                   cmd.complete_access.value_or(false));
+            if (abort) {
+                char what[80];
+                std::snprintf(what, sizeof what, "InitCmd 0x%04X:%u refused, abort 0x%08X", static_cast<unsigned>(*cmd.index),
+                              static_cast<unsigned>(cmd.subindex.value_or(0)), abort);
+                return what;
+            }
+        }
     if (sms) {
         for (unsigned n = 0; n < sms->items.size(); ++n) {
             const std::uint8_t type = sms->items[n].type;

@@ -237,6 +237,75 @@ void set_default_assignment(CoeDictionary& dictionary, std::uint32_t sm, const s
     }
 }
 
+// AL states in which a master sends an InitCmd of this transition (ETG.2000 InitCmd/Transition):
+// the state the device is in when the command arrives.
+std::uint16_t write_bits_for(const InitCmd& cmd) {
+    std::uint16_t bits = 0;
+    for (const Transition& t : cmd.transitions) {
+        if (t.text == "IP" || t.text == "PS" || t.text == "PI") bits |= access_bit::write_preop;
+        if (t.text == "SO" || t.text == "SP" || t.text == "SI") bits |= access_bit::write_safeop;
+        if (t.text == "OS" || t.text == "OP" || t.text == "OI") bits |= access_bit::write_op;
+    }
+    return bits;
+}
+
+// The device's own CoE InitCmds are accepted: a master sends them because the ESI says so, and
+// the firmware the ESI describes takes them. Where the Dictionary makes an InitCmd's target
+// read-only, the entry becomes writable in the state the command arrives in; where it has no
+// such object or entry, one is made of the command's size (an ESI that lists InitCmds for
+// objects its Dictionary leaves out, e.g. a coupler's module configuration).
+void accept_init_cmds(const Device& device, CoeDictionary& dictionary) {
+    if (!device.mailbox || !device.mailbox->coe) return;
+    for (const InitCmd& cmd : device.mailbox->coe->init_cmds) {
+        const auto data = cmd.data.bytes();
+        const std::uint16_t bits = write_bits_for(cmd);
+        if (!cmd.index || *cmd.index > 0xFFFF || !data || data->empty() || data->size() > 0xFFFF || bits == 0) continue;
+        const std::uint32_t subindex = cmd.subindex.value_or(0);
+        if (subindex > 255) continue;
+        CoeObject* object = dictionary.find(*cmd.index);
+        if (cmd.complete_access.value_or(false)) {
+            if (object)
+                for (CoeEntry& e : object->entries) e.access |= bits;
+            continue;
+        }
+        if (!object) {
+            CoeObject o;
+            o.index = static_cast<std::uint16_t>(*cmd.index);
+            o.from_model = false;
+            o.name = cmd.comment.value_or("");
+            o.code = subindex == 0 ? object_code::var : object_code::record;
+            if (subindex != 0) {
+                CoeEntry sub0;
+                sub0.name = "SubIndex 000";
+                sub0.basic = find_basic_type("USINT");
+                sub0.data_type = 0x0005;
+                sub0.bit_size = 8;
+                sub0.access = access_bit::read_all;
+                sub0.default_value = {static_cast<std::uint8_t>(subindex)};
+                sub0.value = sub0.default_value;
+                o.entries.push_back(std::move(sub0));
+            }
+            object = &dictionary.add(std::move(o));
+        }
+        if (!object->entry(subindex)) {
+            CoeEntry e;
+            e.subindex = static_cast<std::uint8_t>(subindex);
+            e.name = cmd.comment.value_or("");
+            e.basic = find_basic_type("OCTET_STRING");
+            e.data_type = e.basic ? e.basic->coe_code : 0x000A;
+            e.bit_size = static_cast<std::uint32_t>(data->size() * 8);
+            e.bit_offset = object->entries.empty() ? 0 : object->entries.back().bit_offset + object->entries.back().bit_size;
+            e.access = access_bit::read_all;
+            e.default_value.assign(data->size(), 0);
+            e.value = e.default_value;
+            auto at = std::lower_bound(object->entries.begin(), object->entries.end(), e.subindex,
+                                       [](const CoeEntry& x, std::uint8_t si) { return x.subindex < si; });
+            object->entries.insert(at, std::move(e));
+        }
+        object->entry(subindex)->access |= bits;
+    }
+}
+
 }  // namespace
 
 DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics) {
@@ -282,6 +351,7 @@ DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, D
     }
     for (const auto& [sm, pdos] : modules.assignment) set_default_assignment(model.dictionary, sm, pdos);
     add_objects_from_pdo_entries(d, model.dictionary);
+    accept_init_cmds(d, model.dictionary);
     return model;
 }
 
