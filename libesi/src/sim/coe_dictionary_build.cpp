@@ -308,6 +308,25 @@ void accept_init_cmds(const Device& device, CoeDictionary& dictionary) {
 
 }  // namespace
 
+void fill_sm_types(CoeDictionary& dictionary, const std::vector<SmRole>& roles) {
+    CoeObject* object = dictionary.find(0x1C00);
+    if (!object || object->code == object_code::var) return;
+    const bool any_value = std::any_of(object->entries.begin(), object->entries.end(),
+                                       [](const CoeEntry& e) { return e.unsigned_value() != 0; });
+    if (any_value) return;
+    std::uint8_t count = 0;
+    for (CoeEntry& e : object->entries) {
+        if (e.subindex == 0 || e.subindex > roles.size()) continue;
+        e.set_unsigned(static_cast<std::uint8_t>(roles[e.subindex - 1u]));  // SmRole's values are the codes
+        e.default_value = e.value;
+        count = std::max(count, e.subindex);
+    }
+    if (CoeEntry* sub0 = object->entry(0)) {
+        sub0->set_unsigned(count);
+        sub0->default_value = sub0->value;
+    }
+}
+
 DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics) {
     DeviceModel model;
     model.device = device;
