@@ -82,7 +82,12 @@ std::string run_to_op(const EtherCATInfo& info, const Device& device) {
             const std::uint8_t type = sms->items[n].type;
             if (type != 3 && type != 4) continue;
             std::optional<std::uint32_t> bits;
-            if (mailbox && device.mailbox->coe) bits = coe_sm_bits(m, n);
+            // SOEM reads the PDO configuration over CoE only when 0x1C00 lists more than the
+            // mailbox SMs.
+            if (mailbox && device.mailbox->coe) {
+                const SdoResult sm_types = m.upload(0x1C00, 0);
+                if (!sm_types.abort && le(sm_types.data) > 2) bits = coe_sm_bits(m, n);
+            }
             if (!bits) {
                 // SII: the PDOs of the category assigned to this SM.
                 bits = 0;
