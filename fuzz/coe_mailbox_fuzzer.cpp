@@ -19,7 +19,7 @@
 
 namespace {
 
-const esi::EsiDocument& reference_document() {
+const esi::EsiDocument& coe_fuzz_document() {
     static const esi::EsiDocument document = [] {
         esi::ReadResult read = esi::read_esi_file(ESI_FUZZ_REFERENCE_ESI);
         if (!read.document || read.document->infos.empty() || read.document->infos.front().devices.empty()) std::abort();
@@ -34,9 +34,9 @@ const esi::EsiDocument& reference_document() {
 }
 
 // Just enough of an ESC for the stack: memory, the AL control event and 1-buffer mailboxes.
-class MiniEsc final : public esi::esc::Pdi {
+class CoeFuzzEsc final : public esi::esc::Pdi {
 public:
-    MiniEsc() : memory_(0x10000, 0) {}
+    CoeFuzzEsc() : memory_(0x10000, 0) {}
     void read(std::uint16_t address, std::span<std::uint8_t> out) override {
         for (std::size_t i = 0; i < out.size(); ++i) {
             const std::size_t a = address + i;
@@ -86,32 +86,32 @@ private:
     std::vector<std::uint8_t> memory_;
 };
 
-void configure_sm(MiniEsc& esc, unsigned n, const esi::SyncManager& s) {
+void coe_fuzz_configure_sm(CoeFuzzEsc& esc, unsigned n, const esi::SyncManager& s) {
     const std::uint16_t start = static_cast<std::uint16_t>(s.start_address.value_or(0));
     const std::uint16_t length = static_cast<std::uint16_t>(s.default_size.value_or(0));
     const std::array<std::uint8_t, 7> r{static_cast<std::uint8_t>(start), static_cast<std::uint8_t>(start >> 8),
                                         static_cast<std::uint8_t>(length), static_cast<std::uint8_t>(length >> 8),
                                         static_cast<std::uint8_t>(s.control_byte.value_or(0)), 0, 1};
-    esc.master_write(static_cast<std::uint16_t>(MiniEsc::sm(n)), r);
+    esc.master_write(static_cast<std::uint16_t>(CoeFuzzEsc::sm(n)), r);
 }
 
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-    const esi::EsiDocument& document = reference_document();
+    const esi::EsiDocument& document = coe_fuzz_document();
     const esi::EtherCATInfo& info = document.infos.front();
     const esi::Device& device = info.devices.front();
     esi::Diagnostics diagnostics;
     std::unique_ptr<esi::esc::SlaveStack> slave = esi::sim::make_model_slave(info, device, {.echo = (size & 1) != 0}, diagnostics);
     if (!slave) std::abort();
-    MiniEsc esc;
-    for (unsigned n = 0; n < device.sms.size() && n < 4; ++n) configure_sm(esc, n, device.sms[n]);
+    CoeFuzzEsc esc;
+    for (unsigned n = 0; n < device.sms.size() && n < 4; ++n) coe_fuzz_configure_sm(esc, n, device.sms[n]);
     const std::array<std::uint8_t, 2> preop{2, 0};
     esc.master_write(0x0120, preop);
     slave->poll(esc);
 
-    const std::uint16_t out_start = esc.u16(MiniEsc::sm(0));
-    const std::uint16_t out_length = esc.u16(MiniEsc::sm(0) + 2);
+    const std::uint16_t out_start = esc.u16(CoeFuzzEsc::sm(0));
+    const std::uint16_t out_length = esc.u16(CoeFuzzEsc::sm(0) + 2);
     std::span<const std::uint8_t> script(data, size);
     while (!script.empty()) {
         const std::uint8_t action = script[0];
@@ -133,7 +133,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             }
             case 2: {  // toggle SM1's repeat request
                 std::array<std::uint8_t, 1> activate{static_cast<std::uint8_t>(1 | ((action >> 2) & 2))};
-                esc.master_write(static_cast<std::uint16_t>(MiniEsc::sm(1) + 6), activate);
+                esc.master_write(static_cast<std::uint16_t>(CoeFuzzEsc::sm(1) + 6), activate);
                 break;
             }
             default: {  // rewrite one byte of an SM register or of the DC activation
