@@ -13,12 +13,9 @@
 #include "diagnostic_line.hpp"
 #include "out_of_memory.hpp"
 #include "esi/io/read_file.hpp"
+#include "esi/sim/model_slave.hpp"
 #include "esi/sim/raw_socket.hpp"
 #include "esi/sim/slave_setup.hpp"
-#if __has_include("esi/sim/model_slave.hpp")
-#include "esi/sim/model_slave.hpp"
-#define ESI_SIM_HAS_MODEL_SLAVE 1
-#endif
 
 namespace {
 
@@ -39,14 +36,10 @@ void install_stop_handlers() {
     sigaction(SIGTERM, &action, nullptr);
 }
 
-esi::sim::StackFactory model_slaves([[maybe_unused]] bool echo) {
-#ifdef ESI_SIM_HAS_MODEL_SLAVE
+esi::sim::StackFactory model_slaves(bool echo) {
     return [echo](const esi::EtherCATInfo& info, const esi::Device& device, esi::Diagnostics& diagnostics) {
         return esi::sim::make_model_slave(info, device, {.echo = echo}, diagnostics);
     };
-#else
-    return {};
-#endif
 }
 
 }  // namespace

@@ -56,6 +56,7 @@ run_target() {
         sii_*) seeds="$shared/sii fuzz/seeds/sii"; dict=fuzz/sii.dict ;;
         diff_*) seeds="fuzz/seeds/diff build-fuzz/seeds/diff" ;;
         coe_*) seeds="fuzz/seeds/coe" ;;
+        esc_*) seeds="fuzz/seeds/esc"; dict=fuzz/esc.dict ;;
     esac
     existing=""
     for s in $seeds; do [ -e "$s" ] && existing="$existing $s"; done

@@ -9,6 +9,7 @@
 #include "esi/net/network.hpp"
 #include "esi/net/network_spec.hpp"
 #include "esi/sii/build.hpp"
+#include "slotted_device.hpp"
 
 namespace esi::sim {
 
@@ -17,6 +18,31 @@ namespace {
 [[nodiscard]] std::string identity_text(const Device& device) {
     return fmt::format("{} (product code 0x{:08X}, revision 0x{:08X})", device.type.text,
                        device.type.product_code.value_or(0), device.type.revision_no.value_or(0));
+}
+
+// A modular device as a one-slave network, so that esi-net puts its default modules in its
+// slots; nullopt when the device has no slots or the network cannot be built.
+[[nodiscard]] std::optional<Device> with_default_modules(const std::filesystem::path& source, const EtherCATInfo& info,
+                                                         const Device& device, Diagnostics& diagnostics) {
+    if (!device.slots || device.slots->slots.empty()) return std::nullopt;
+    net::NetworkSpec spec;
+    spec.path = source.string();
+    spec.esi = {source.filename().string()};
+    net::SlaveSpec slave;
+    slave.name = device.type.text;
+    slave.product_code = device.type.product_code;
+    slave.revision = device.type.revision_no;
+    if (info.vendor) slave.vendor_id = info.vendor->id;
+    spec.slaves.push_back(slave);
+    net::BuildResult built = net::build_network(spec, net::BuildOptions{});
+    if (!built.network || built.network->slaves.size() != 1) {
+        diagnostics.emplace(Severity::warning, "sim-modules",
+                            "the default modules could not be placed in the slots (as esi-net would); the device runs "
+                            "without modules",
+                            source.string(), device.pos);
+        return std::nullopt;
+    }
+    return device_with_modules(built.network->slaves.front());
 }
 
 [[nodiscard]] const EtherCATInfo* info_of(const EsiDocument& document, const Device& device) {
@@ -59,7 +85,7 @@ std::optional<VirtualSlave> build_slave(const EtherCATInfo& info, const Device& 
     slave.product_code = device.type.product_code.value_or(0);
     slave.revision = device.type.revision_no.value_or(0);
     slave.esc = std::make_unique<esc::Esc>(std::move(image), options.esc);
-    if (stacks) slave.stack = stacks(info, device, diagnostics);
+    if (stacks) slave.stack = stacks(info, options.firmware ? *options.firmware : device, diagnostics);
     return slave;
 }
 
@@ -101,6 +127,8 @@ LineResult line_from_source(const std::filesystem::path& source, const SourceOpt
         }
         slave_options.eeprom = std::vector<std::uint8_t>(bytes->begin(), bytes->end());
     }
+    const std::optional<Device> slotted = with_default_modules(source, *info, device, result.diagnostics);
+    if (slotted) slave_options.firmware = &*slotted;
     std::optional<VirtualSlave> slave = build_slave(*info, device, slave_options, stacks, path, result.diagnostics);
     if (!slave || result.diagnostics.has_errors()) return result;
     Line line;
@@ -122,8 +150,11 @@ LineResult line_from_network(const std::filesystem::path& network, const StackFa
     Line line;
     for (const auto& document : built.network->documents) line.keep(document);
     for (const net::NetworkSlave& slave : built.network->slaves) {
+        const Device firmware = device_with_modules(slave);
+        SlaveOptions options;
+        options.firmware = &firmware;
         std::optional<VirtualSlave> virtual_slave =
-            build_slave(*slave.info, *slave.device, {}, stacks, slave.esi_path, result.diagnostics);
+            build_slave(*slave.info, *slave.device, options, stacks, slave.esi_path, result.diagnostics);
         if (!virtual_slave) continue;
         line.add(std::move(*virtual_slave));
     }

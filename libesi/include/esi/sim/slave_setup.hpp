@@ -28,6 +28,9 @@ using StackFactory =
 struct SlaveOptions {
     std::optional<std::vector<std::uint8_t>> eeprom;  // the image as given; else built from the device
     esc::EscConfig esc;
+    // The device the firmware serves when it is not the one the EEPROM describes: a modular
+    // device with the modules in its slots (the SII image describes the device alone).
+    const Device* firmware = nullptr;
 };
 
 // One virtual slave for `device` (one of info.devices). Errors (an image the sii layer refuses)
@@ -47,7 +50,8 @@ struct LineResult {
 };
 
 // SOURCE [--device] [--eeprom]: a line of one slave. A file that describes several devices
-// needs --device; a selector that matches none, or several, is an error.
+// needs --device; a selector that matches none, or several, is an error. A modular device runs
+// with its default modules in their slots, as esi-net chooses them.
 [[nodiscard]] LineResult line_from_source(const std::filesystem::path& source, const SourceOptions& options,
                                           const StackFactory& stacks);
 
