@@ -127,6 +127,10 @@ TEST(EscSyncManager, AlControlIsAnAlEventAndDeviceEmulationFollowsIt) {
     const std::uint8_t status[2] = {0x02, 0x00};
     plain.write(esc::reg::al_status, status);
     EXPECT_EQ(plain.peek8(esc::reg::al_status), 0x02);
+    // Under device emulation the PDI cannot override the state the ESC shows.
+    const std::uint8_t refused[2] = {0x12, 0x00};
+    emulating.write(esc::reg::al_status, refused);
+    EXPECT_EQ(emulating.peek8(esc::reg::al_status), 0x02);
 }
 
 }  // namespace

@@ -66,8 +66,6 @@ const std::map<std::string, std::string> known_not_op = {
      "0x1000/128 bytes and the firmware refuses that mailbox (AL status code 0x0016), as the device would with this image"},
     {"Elmo__ECAT_00010420_V11__hw_device_mgr.xml #x00030925:#x00000001 (CoE drive (Elmo))",
      "ESI defect: the same SyncM category as product 0x00030924 (AL status code 0x0016)"},
-    {"Beckhoff__EL9xxx__dls-ethercat__2018-01.xml #x23963052:#x00120000 (power terminal)",
-     "not analysed yet: the firmware refuses SOEM's input SyncManager in PREOP->SAFEOP (AL status code 0x001E)"},
     {"Inovance__SV660_EOE_1Axis_V9.12__hw_device_mgr__2021-09.xml #x000C010D:#x00010000 (CoE drive (Inovance))",
      "not analysed yet: the firmware refuses SOEM's output SyncManager in PREOP->SAFEOP (AL status code 0x001D)"},
     {"Weidmueller__UR20_FBC__ethercat-esi.xml #x4F911C30:#x00011100 (modular coupler)",

@@ -131,8 +131,11 @@ std::uint8_t Esc::write_mask(Side side, std::uint32_t a) const {
         return 0x00;
     }
     if (a >= reg::sm0 && a < sm_end && (a - reg::sm0) % reg::sm_stride == reg::sm_pdi_control) return 0x03;
-    if (a >= reg::al_status && a < reg::al_status + 2) return 0xFF;
-    if (a >= reg::al_status_code && a < reg::al_status_code + 2) return 0xFF;
+    // With device emulation the ESC itself drives AL status from AL control; the PDI cannot
+    // write AL status or its code (ESC datasheet section II, 0x0130 and 0x0141).
+    const bool emulation = memory_[reg::esc_configuration] & reg::esc_configuration_device_emulation;
+    if (a >= reg::al_status && a < reg::al_status + 2) return emulation ? 0x00 : 0xFF;
+    if (a >= reg::al_status_code && a < reg::al_status_code + 2) return emulation ? 0x00 : 0xFF;
     if (a >= reg::al_event_mask && a < reg::al_event_mask + 4) return 0xFF;
     if (a >= reg::station_alias && a < reg::station_alias + 2) return 0xFF;
     return 0x00;

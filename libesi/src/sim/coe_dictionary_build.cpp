@@ -7,6 +7,7 @@
 
 #include "esi/derive/derive.hpp"
 #include "esi/model/object_layout.hpp"
+#include "esi/net/default_slave.hpp"
 
 namespace esi::sim {
 
@@ -165,7 +166,166 @@ void add_objects_from_pdo_entries(const Device& device, CoeDictionary& dictionar
     }
 }
 
+// A modular device runs with the modules its slots hold by default: their PDOs join the device's
+// (indices moved by the slot increments, assigned to the SMs esi-net assigns them to), so the
+// mapping objects derived below include them; the assignment objects get esi-net's default
+// assignment (set_default_assignment).
+struct DefaultModules {
+    std::vector<net::ModuleObject> objects;
+    std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> assignment;  // SM, PDO indices
+};
+
+DefaultModules add_default_modules(const EtherCATInfo& info, const Device& original, Device& device) {
+    DefaultModules out;
+    if (!original.slots || original.slots->slots.empty()) return out;
+    Diagnostics ignored;  // what esi-net would report is lint's and esi-net's business
+    net::DefaultSlave configured = net::configure_default_slave(info, original, ignored);
+    if (configured.slave.modules.empty()) return out;
+    for (const net::ConfiguredPdo& c : configured.slave.pdos) {
+        if (!c.module) continue;
+        Pdo pdo;
+        pdo.direction = c.direction;
+        pdo.index = c.index;
+        pdo.names.emplace_back().text = c.name;
+        pdo.fixed = c.fixed;
+        pdo.sm = c.sm;
+        for (const net::ConfiguredEntry& e : c.entries) {
+            PdoEntry entry;
+            entry.index = e.index;
+            entry.subindex = e.subindex;
+            entry.bit_len = e.bit_len;
+            entry.names.emplace_back().text = e.name;
+            if (!e.data_type.empty()) entry.data_type = e.data_type;
+            pdo.entries.push_back(std::move(entry));
+        }
+        (c.direction == PdoDirection::rx ? device.rx_pdos : device.tx_pdos).push_back(std::move(pdo));
+    }
+    for (const net::SmSetup& sm : configured.slave.sms) {
+        if (!sm.is_process_data()) continue;
+        std::vector<std::uint32_t> indices;
+        for (std::size_t p : sm.pdos) indices.push_back(configured.slave.pdos[p].index);
+        out.assignment.emplace_back(sm.number, std::move(indices));
+    }
+    out.objects = std::move(configured.module_objects);
+    return out;
+}
+
+// The assignment object of an SM set to `pdos`, as its value and its default; entries are added
+// (UINT, after the last) where the object has fewer than the assignment needs.
+void set_default_assignment(CoeDictionary& dictionary, std::uint32_t sm, const std::vector<std::uint32_t>& pdos) {
+    CoeObject* object = dictionary.find(0x1C10 + sm);
+    if (!object || object->entries.empty() || pdos.size() > 254) return;
+    for (std::uint32_t k = 1; k <= pdos.size(); ++k) {
+        if (object->entry(k)) continue;
+        CoeEntry e = object->entries.size() > 1 ? object->entries.back() : CoeEntry{};
+        e.subindex = static_cast<std::uint8_t>(k);
+        e.basic = find_basic_type("UINT");
+        e.data_type = 0x0006;
+        e.bit_size = 16;
+        e.bit_offset = object->entries.back().bit_offset + std::max<std::uint32_t>(object->entries.back().bit_size, 8);
+        if (e.bit_offset < 16) e.bit_offset = 16;
+        e.name = "SubIndex " + std::to_string(1000 + k).substr(1);
+        if (e.access == 0) e.access = access_bit::read_all | access_bit::write_preop;
+        e.value.assign(2, 0);
+        e.default_value = e.value;
+        object->entries.push_back(std::move(e));
+    }
+    for (CoeEntry& e : object->entries) {
+        if (e.subindex == 0) e.set_unsigned(pdos.size());
+        else e.set_unsigned(e.subindex <= pdos.size() ? pdos[e.subindex - 1u] : 0);
+        e.default_value = e.value;
+    }
+}
+
+// AL states in which a master sends an InitCmd of this transition (ETG.2000 InitCmd/Transition):
+// the state the device is in when the command arrives.
+std::uint16_t write_bits_for(const InitCmd& cmd) {
+    std::uint16_t bits = 0;
+    for (const Transition& t : cmd.transitions) {
+        if (t.text == "IP" || t.text == "PS" || t.text == "PI") bits |= access_bit::write_preop;
+        if (t.text == "SO" || t.text == "SP" || t.text == "SI") bits |= access_bit::write_safeop;
+        if (t.text == "OS" || t.text == "OP" || t.text == "OI") bits |= access_bit::write_op;
+    }
+    return bits;
+}
+
+// The device's own CoE InitCmds are accepted: a master sends them because the ESI says so, and
+// the firmware the ESI describes takes them. Where the Dictionary makes an InitCmd's target
+// read-only, the entry becomes writable in the state the command arrives in; where it has no
+// such object or entry, one is made of the command's size (an ESI that lists InitCmds for
+// objects its Dictionary leaves out, e.g. a coupler's module configuration).
+void accept_init_cmds(const Device& device, CoeDictionary& dictionary) {
+    if (!device.mailbox || !device.mailbox->coe) return;
+    for (const InitCmd& cmd : device.mailbox->coe->init_cmds) {
+        const auto data = cmd.data.bytes();
+        const std::uint16_t bits = write_bits_for(cmd);
+        if (!cmd.index || *cmd.index > 0xFFFF || !data || data->empty() || data->size() > 0xFFFF || bits == 0) continue;
+        const std::uint32_t subindex = cmd.subindex.value_or(0);
+        if (subindex > 255) continue;
+        CoeObject* object = dictionary.find(*cmd.index);
+        if (cmd.complete_access.value_or(false)) {
+            if (object)
+                for (CoeEntry& e : object->entries) e.access |= bits;
+            continue;
+        }
+        if (!object) {
+            CoeObject o;
+            o.index = static_cast<std::uint16_t>(*cmd.index);
+            o.from_model = false;
+            o.name = cmd.comment.value_or("");
+            o.code = subindex == 0 ? object_code::var : object_code::record;
+            if (subindex != 0) {
+                CoeEntry sub0;
+                sub0.name = "SubIndex 000";
+                sub0.basic = find_basic_type("USINT");
+                sub0.data_type = 0x0005;
+                sub0.bit_size = 8;
+                sub0.access = access_bit::read_all;
+                sub0.default_value = {static_cast<std::uint8_t>(subindex)};
+                sub0.value = sub0.default_value;
+                o.entries.push_back(std::move(sub0));
+            }
+            object = &dictionary.add(std::move(o));
+        }
+        if (!object->entry(subindex)) {
+            CoeEntry e;
+            e.subindex = static_cast<std::uint8_t>(subindex);
+            e.name = cmd.comment.value_or("");
+            e.basic = find_basic_type("OCTET_STRING");
+            e.data_type = e.basic ? e.basic->coe_code : 0x000A;
+            e.bit_size = static_cast<std::uint32_t>(data->size() * 8);
+            e.bit_offset = object->entries.empty() ? 0 : object->entries.back().bit_offset + object->entries.back().bit_size;
+            e.access = access_bit::read_all;
+            e.default_value.assign(data->size(), 0);
+            e.value = e.default_value;
+            auto at = std::lower_bound(object->entries.begin(), object->entries.end(), e.subindex,
+                                       [](const CoeEntry& x, std::uint8_t si) { return x.subindex < si; });
+            object->entries.insert(at, std::move(e));
+        }
+        object->entry(subindex)->access |= bits;
+    }
+}
+
 }  // namespace
+
+void fill_sm_types(CoeDictionary& dictionary, const std::vector<SmRole>& roles) {
+    CoeObject* object = dictionary.find(0x1C00);
+    if (!object || object->code == object_code::var) return;
+    const bool any_value = std::any_of(object->entries.begin(), object->entries.end(),
+                                       [](const CoeEntry& e) { return e.unsigned_value() != 0; });
+    if (any_value) return;
+    std::uint8_t count = 0;
+    for (CoeEntry& e : object->entries) {
+        if (e.subindex == 0 || e.subindex > roles.size()) continue;
+        e.set_unsigned(static_cast<std::uint8_t>(roles[e.subindex - 1u]));  // SmRole's values are the codes
+        e.default_value = e.value;
+        count = std::max(count, e.subindex);
+    }
+    if (CoeEntry* sub0 = object->entry(0)) {
+        sub0->set_unsigned(count);
+        sub0->default_value = sub0->value;
+    }
+}
 
 DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics) {
     DeviceModel model;
@@ -180,6 +340,7 @@ DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, D
         if (d.profiles.empty()) d.profiles.emplace_back();
         d.profiles.front().dictionary.emplace();
     }
+    const DefaultModules modules = add_default_modules(info, device, d);
     DeviceIntent intent;
     intent.options = DeriveOptions::none();
     intent.options.identity_object = intent.options.device_type_object = true;
@@ -201,7 +362,15 @@ DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, D
             model.dictionary.add(std::move(o));
         }
     }
+    for (const net::ModuleObject& m : modules.objects) {
+        if (m.index > 0xFFFF) continue;
+        CoeObject o = runtime_object(DataTypeIndex(m.dictionary), *m.object);
+        o.index = static_cast<std::uint16_t>(m.index);
+        model.dictionary.add(std::move(o));
+    }
+    for (const auto& [sm, pdos] : modules.assignment) set_default_assignment(model.dictionary, sm, pdos);
     add_objects_from_pdo_entries(d, model.dictionary);
+    accept_init_cmds(d, model.dictionary);
     return model;
 }
 

@@ -8,6 +8,7 @@
 #include "esi/diagnostic.hpp"
 #include "esi/model/ethercat_info.hpp"
 #include "sim/coe_dictionary.hpp"
+#include "sim/sdo_access.hpp"
 
 namespace esi::sim {
 
@@ -18,6 +19,11 @@ struct DeviceModel {
     CoeDictionary dictionary;
     bool dictionary_from_model = false;  // the ESI/YAML declared a Dictionary
 };
+
+// 0x1C00 (SM communication types, ETG.1000.6 5.6.7.4.8) where the Dictionary declares it without
+// values: a master (SOEM's ecx_readPDOmap) reads its PDO configuration only when 0x1C00 lists the
+// SMs, and the device's SMs say what it holds (1 MBoxOut, 2 MBoxIn, 3 Outputs, 4 Inputs).
+void fill_sm_types(CoeDictionary& dictionary, const std::vector<SmRole>& roles);
 
 [[nodiscard]] DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics);
 

@@ -15,7 +15,8 @@
 
 namespace esi::sim {
 
-enum class SmRole : std::uint8_t { unused, mailbox_out, mailbox_in, outputs, inputs };
+// The values are the SM communication types of 0x1C00 (ETG.1000.6 5.6.7.4.8).
+enum class SmRole : std::uint8_t { unused = 0, mailbox_out = 1, mailbox_in = 2, outputs = 3, inputs = 4 };
 
 struct AccessRules {
     bool complete_access = false;  // CoE@CompleteAccess

@@ -6,7 +6,8 @@
  *
  * --echo   checks that each slave's inputs repeat its outputs of the cycle before (esi-sim --echo)
  * --dc     configures distributed clocks (ecx_configdc) before SAFEOP
- * --sdo    reads every object the slaves list over SDO Information, each sub-index by ecx_SDOread
+ * --sdo    reads every object the slaves list over SDO Information, each sub-index by ecx_SDOread,
+ *          in SAFEOP (before the process data has changed any object)
  * --init POS:INDEX:SUB:CA:HEX  an SDO download in PREOP->SAFEOP before the mapping is read (an ENI's
  *          CoE InitCmds for transition PS; POS is the slave's 0-based position, CA 1 for complete access)
  * --scan-only  stops after ecx_config_init (and reports the ESC's EEPROM and PDI state)
@@ -225,11 +226,14 @@ int main(int argc, char **argv)
       return 0;
    }
    for (int s = 1; s <= context.slavecount; ++s) context.slavelist[s].PO2SOconfig = apply_init_cmds;
+   /* In PREOP, before any process data has changed an object. */
    ecx_config_map_group(&context, io_map, 0);
    if (dc) ecx_configdc(&context);
    ec_groupt *group = &context.grouplist[0];
    int expected_wkc = group->outputsWKC * 2 + group->inputsWKC;
    ecx_statecheck(&context, 0, EC_STATE_SAFE_OP, state_timeout_ms * 1000);
+   /* In SAFEOP, before the first outputs: no object has changed yet. */
+   if (sdo) read_dictionaries();
    write_outputs(0);
    ecx_send_processdata(&context);
    ecx_receive_processdata(&context, EC_TIMEOUTRET);
@@ -269,7 +273,6 @@ int main(int argc, char **argv)
    printf(",\"obytes\":%u,\"ibytes\":%u,\"init_cmds\":%d,\"init_cmd_failures\":%d", group->Obytes, group->Ibytes,
           init_cmd_count, init_cmd_failures);
    print_slaves();
-   if (sdo) read_dictionaries();
    printf("}\n");
    context.slavelist[0].state = EC_STATE_INIT;
    ecx_writestate(&context, 0);
