@@ -1,4 +1,4 @@
-# bash completion for the libesi tools: esi-lint, esi-gen, esi-diff, esi-sii, esi-net, esi-doc.
+# bash completion for the libesi tools: esi-lint, esi-gen, esi-diff, esi-sii, esi-net, esi-doc, esi-sim.
 # Commands, options and option values come from the tool itself (TOOL --help-completion prints
 # the table its --help is rendered from, cli/cli_reference.hpp), so the completion knows exactly
 # the options of the installed tool. Rule ids after esi-lint --explain come from
@@ -39,6 +39,10 @@ _esi_complete() {
             COMPREPLY=($(compgen -W "$("$tool" --list-rules 2>/dev/null | cut -d' ' -f1)" -- "$cur"))
             return 0
             ;;
+        "esi-sim --iface")
+            COMPREPLY=($(compgen -W "$(ls /sys/class/net 2>/dev/null)" -- "$cur"))
+            return 0
+            ;;
         "esi-gen --only")
             # A comma-separated list: complete the last kind, keep the ones before it.
             local done_kinds=${cur%"${cur##*,}"} kinds
@@ -67,4 +71,4 @@ _esi_complete() {
     return 0
 }
 
-complete -F _esi_complete esi-lint esi-gen esi-diff esi-sii esi-net esi-doc
+complete -F _esi_complete esi-lint esi-gen esi-diff esi-sii esi-net esi-doc esi-sim

@@ -55,6 +55,8 @@ run_target() {
         yaml_*) seeds="samples fuzz/seeds/yaml"; dict=fuzz/yaml.dict ;;
         sii_*) seeds="$shared/sii fuzz/seeds/sii"; dict=fuzz/sii.dict ;;
         diff_*) seeds="fuzz/seeds/diff build-fuzz/seeds/diff" ;;
+        coe_*) seeds="fuzz/seeds/coe" ;;
+        esc_*) seeds="fuzz/seeds/esc"; dict=fuzz/esc.dict ;;
     esac
     existing=""
     for s in $seeds; do [ -e "$s" ] && existing="$existing $s"; done

@@ -34,6 +34,9 @@
 #define LLVMFuzzerTestOneInput yaml_source_fuzz_one
 #include "../../fuzz/yaml_source_fuzzer.cpp"
 #undef LLVMFuzzerTestOneInput
+#define LLVMFuzzerTestOneInput coe_mailbox_fuzz_one
+#include "../../fuzz/coe_mailbox_fuzzer.cpp"
+#undef LLVMFuzzerTestOneInput
 
 namespace {
 
@@ -85,3 +88,5 @@ TEST(FuzzReplay, Codegen) { EXPECT_GT(replay(codegen_fuzz_one, "codegen_fuzzer",
 TEST(FuzzReplay, YamlSource) {
     EXPECT_GT(replay(yaml_source_fuzz_one, "yaml_source_fuzzer", {source("samples"), source("fuzz/seeds/yaml")}), 0u);
 }
+
+TEST(FuzzReplay, CoeMailbox) { EXPECT_GT(replay(coe_mailbox_fuzz_one, "coe_mailbox_fuzzer", {source("fuzz/seeds/coe")}), 0u); }

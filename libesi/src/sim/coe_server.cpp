@@ -1,0 +1,57 @@
+// CoE header and service dispatch (coe_server.hpp).
+
+#include "sim/coe_server.hpp"
+
+#include <algorithm>
+
+#include "sim/mailbox_error.hpp"
+#include "sim/sdo_info.hpp"
+
+namespace esi::sim {
+
+namespace {
+
+// CoE services (ETG.1000.6 Table 29).
+constexpr std::uint8_t service_sdo_request = 2;
+constexpr std::uint8_t service_sdo_response = 3;
+constexpr std::uint8_t service_sdo_information = 8;
+constexpr std::size_t coe_header_bytes = 2;
+
+std::vector<std::uint8_t> with_header(std::uint8_t service, const std::vector<std::uint8_t>& body) {
+    std::vector<std::uint8_t> out(coe_header_bytes + body.size(), 0);
+    out[1] = static_cast<std::uint8_t>(service << 4);
+    std::copy(body.begin(), body.end(), out.begin() + coe_header_bytes);
+    return out;
+}
+
+}  // namespace
+
+CoeReply CoeServer::handle(std::span<const std::uint8_t> request, AlState state, std::size_t room) {
+    CoeReply reply;
+    if (request.size() < coe_header_bytes) {
+        reply.mailbox_error = mailbox_error::size_too_short;
+        return reply;
+    }
+    if (room <= coe_header_bytes) {
+        reply.mailbox_error = mailbox_error::no_more_memory;
+        return reply;
+    }
+    const std::uint8_t service = request[1] >> 4;
+    const std::span<const std::uint8_t> body = request.subspan(coe_header_bytes);
+    const std::size_t body_room = room - coe_header_bytes;
+    if (service == service_sdo_request) {
+        std::vector<std::uint8_t> response = sdo_.handle(body, state, body_room);
+        if (!response.empty()) reply.frames.push_back(with_header(service_sdo_response, response));
+        return reply;
+    }
+    if (service == service_sdo_information && sdo_info_) {
+        for (const std::vector<std::uint8_t>& f : sdo_info_response(access_.dictionary(), body, body_room))
+            reply.frames.push_back(with_header(service_sdo_information, f));
+        if (reply.frames.empty()) reply.mailbox_error = mailbox_error::no_more_memory;
+        return reply;
+    }
+    reply.mailbox_error = mailbox_error::service_not_supported;
+    return reply;
+}
+
+}  // namespace esi::sim

@@ -1,0 +1,48 @@
+#pragma once
+// A sample device loaded for a test, with its model slave on a FakeEsc and a TestMaster.
+
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <string>
+
+#include "esi/load/document.hpp"
+#include "esi/sim/model_slave.hpp"
+#include "sim_device/fake_esc.hpp"
+#include "sim_device/test_master.hpp"
+
+namespace esi::sim::test_bench {
+
+struct LoadedSample {
+    LoadedDocument loaded;
+    const EtherCATInfo* info = nullptr;
+    const Device* device = nullptr;
+};
+
+inline std::unique_ptr<LoadedSample> load_sample(const std::string& relative, std::size_t device_index = 0) {
+    auto out = std::make_unique<LoadedSample>();
+    out->loaded = load_document_file(std::string(ESI_SOURCE_DIR) + "/" + relative);
+    if (!out->loaded.document || out->loaded.document->infos.empty()) return nullptr;
+    out->info = &out->loaded.document->infos.front();
+    if (device_index >= out->info->devices.size()) return nullptr;
+    out->device = &out->info->devices[device_index];
+    return out;
+}
+
+// Everything a test needs to talk to one simulated device.
+struct Bench {
+    std::unique_ptr<LoadedSample> sample;
+    FakeEsc esc;
+    std::unique_ptr<esc::SlaveStack> slave;
+    Diagnostics diagnostics;
+    std::unique_ptr<TestMaster> master;
+
+    explicit Bench(const std::string& relative, ModelSlaveOptions options = {}) : sample(load_sample(relative)) {
+        if (!sample) return;
+        slave = make_model_slave(*sample->info, *sample->device, options, diagnostics);
+        if (slave) master = std::make_unique<TestMaster>(esc, *slave, *sample->info, *sample->device);
+    }
+    [[nodiscard]] bool ready() const { return master != nullptr; }
+};
+
+}  // namespace esi::sim::test_bench
