@@ -36,6 +36,16 @@ std::string subindex_list(const ObjectLayout& layout) {
     return out;
 }
 
+bool restates_entries(const ConfiguredPdo& pdo, const PdoEntriesSpec& spec) {
+    if (pdo.entries.size() != spec.entries.size()) return false;
+    for (std::size_t i = 0; i < spec.entries.size(); ++i) {
+        const ConfiguredEntry& have = pdo.entries[i];
+        const PdoEntrySpec& want = spec.entries[i];
+        if (have.index != want.index || have.bit_len != want.bit_len || (want.index != 0 && have.subindex != want.subindex)) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 void configure_pdo_entries(SlaveContext& c) {
@@ -50,6 +60,9 @@ void configure_pdo_entries(SlaveContext& c) {
         }
         ConfiguredPdo& pdo = *it;
         if (pdo.fixed) {
+            // Restating a Fixed PDO's entries exactly as the ESI declares them is no change (an
+            // ENI or a network written from one lists every assigned PDO's entries).
+            if (restates_entries(pdo, spec)) continue;
             c.error(spec.pos, "net-pdo-fixed", fmt::format("PDO {} is Fixed in the ESI; its entries cannot be changed", hex_index(spec.pdo)));
             continue;
         }
