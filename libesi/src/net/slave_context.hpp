@@ -67,6 +67,8 @@ void configure_pdo_entries(SlaveContext& context);
 void setup_sync_managers(SlaveContext& context);
 void setup_dc(SlaveContext& context, const MasterSpec& master);
 void build_coe_init_cmds(SlaveContext& context, const MasterSpec& master);
+// ros2_interfaces name entries the slave maps (ros2_interfaces.cpp).
+void check_ros2_interfaces(SlaveContext& context);
 
 // The process image: slave offsets, frames, FMMU logical addresses, variables.
 void layout_process_image(Network& network, Diagnostics& diagnostics, const std::string& path);
