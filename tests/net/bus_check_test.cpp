@@ -117,6 +117,14 @@ TEST(BusCheck, SiiDumpAgainstItsEsi) {
     const std::string text = esi::test::diagnostics_text(r.findings);
     EXPECT_EQ(text.find("[check-unknown-device]"), std::string::npos) << text;
     EXPECT_EQ(text.find("which no ESI of the library describes"), std::string::npos) << text;
+    EXPECT_TRUE(r.findings.empty()) << text;
+    // One bit off in the EEPROM size word (0x3E) is reported with esi-sii's rule as a note.
+    dump.bytes[0x7C] ^= 0x01;
+    const esi::net::CheckResult changed = esi::net::check_bus({}, {dump}, nullptr, esi::test::corpus_index());
+    ASSERT_EQ(changed.findings.size(), 1u);
+    EXPECT_EQ(changed.findings.items()[0].rule, "check-sii");
+    ASSERT_EQ(changed.findings.items()[0].notes.size(), 1u);
+    EXPECT_NE(changed.findings.items()[0].notes[0].message.find("[sii-eeprom-size]"), std::string::npos);
 }
 
 }  // namespace
