@@ -159,3 +159,37 @@ TEST(EniImport, EsiNetsOwnEniRoundTrips) {
 }
 
 }  // namespace
+
+namespace {
+
+// Names, comments and transitions come from the ENI: written as quoted YAML text, they come back
+// as the same text, and a transition that is none is refused rather than written into the file.
+TEST(EniImport, TextFromTheEniStaysText) {
+    ESI_REQUIRE_CORPUS();
+    const esi::test::NamedNetwork& n = esi::test::corpus_networks()[2];  // elmo-configured: named start-up SDOs
+    ASSERT_EQ(n.name, "elmo-configured");
+    const esi::net::BuildResult first = esi::test::build_corpus_network(n.yaml);
+    ASSERT_TRUE(first.network) << esi::test::diagnostics_text(first.diagnostics);
+    std::string eni = esi::net::write_eni(*first.network);
+    const std::string hostile = "Axis \"1\"\n# x: [y] {z} ${w}";
+    const std::size_t at = eni.find("<![CDATA[Axis 1]]>");
+    ASSERT_NE(at, std::string::npos);
+    eni.replace(at, 18, "<![CDATA[" + hostile + "]]>");
+    const esi::net::EniImport imported = esi::net::network_from_eni(eni, "hostile.xml", esi::test::corpus_index(), {});
+    ASSERT_FALSE(imported.yaml.empty()) << esi::test::diagnostics_text(imported.diagnostics);
+    const esi::net::NetworkFileResult read = esi::net::read_network_text(imported.yaml, "imported.yaml");
+    ASSERT_TRUE(read.spec) << imported.yaml;
+    EXPECT_EQ(read.spec->slaves[0].name, hostile);
+
+    std::string bad = esi::net::write_eni(*first.network);
+    // The network's SDO 0x6065 is sent on PS and SO: its CoE InitCmd's SO transition.
+    const std::size_t sdo = bad.rfind("<Transition>SO</Transition>", bad.find("<![CDATA[0x6065:00]]>"));
+    ASSERT_NE(sdo, std::string::npos);
+    bad.replace(sdo, 27, "<Transition>SO], evil: [1</Transition>");
+    const esi::net::EniImport refused = esi::net::network_from_eni(bad, "bad.xml", esi::test::corpus_index(), {});
+    EXPECT_TRUE(refused.yaml.empty());
+    EXPECT_NE(esi::test::diagnostics_text(refused.diagnostics).find("[net-transition]"), std::string::npos)
+        << esi::test::diagnostics_text(refused.diagnostics);
+}
+
+}  // namespace

@@ -97,7 +97,7 @@ std::string render(const EniFacts& facts, const MasterSpec& master, const std::v
                 std::string data;
                 for (std::uint8_t b : *c.data) data += fmt::format("{:02x}", b);
                 std::string transitions;
-                for (const std::string& t : c.transitions) transitions += (transitions.empty() ? "" : ", ") + t;
+                for (const std::string& t : c.transitions) transitions += (transitions.empty() ? "" : ", ") + yaml_quoted(t);
                 y += in + fmt::format("  - {{ index: {}, subindex: {}, data: \"{}\", transition: [{}]", hex(c.index, 4), c.subindex, data, transitions);
                 if (c.complete_access) y += ", complete_access: true";
                 if (c.comment) y += ", comment: " + yaml_quoted(*c.comment);

@@ -266,6 +266,7 @@ private:
         }
         if (const Node* n = f->find("limits")) s.limits = yaml::read_limits(reader_, *n);
         if (const Node* n = f->find("ros2_interfaces")) s.ros2_interfaces = read_ros2_interfaces(reader_, *n);
+        if (const Node* n = f->find("force_entries")) s.force_entries = read_forced_entries(reader_, *n);
     }
 
     yaml::Reader reader_;

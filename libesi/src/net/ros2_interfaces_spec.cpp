@@ -14,7 +14,8 @@ namespace esi::net {
 
 namespace {
 
-// "0x6000:0x01" or "0x6000:1": the entry's index and sub-index.
+}  // namespace
+
 bool parse_entry_key(std::string_view text, std::uint32_t& index, std::uint32_t& subindex) {
     const std::size_t colon = text.find(':');
     if (colon == std::string_view::npos) return false;
@@ -28,6 +29,8 @@ bool parse_entry_key(std::string_view text, std::uint32_t& index, std::uint32_t&
     subindex = static_cast<std::uint32_t>(*sv);
     return true;
 }
+
+namespace {
 
 // The driver reads `default` as a double; `.nan` means "send nothing unless commanded".
 std::optional<double> default_value(yaml::Reader& reader, const yaml::Node& node) {

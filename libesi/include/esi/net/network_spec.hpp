@@ -78,6 +78,13 @@ struct Ros2InterfaceSpec {
     SourcePos pos;
 };
 
+// force_entries: an entry the ESI marks not mappable that the user knows the firmware maps.
+struct ForcedEntry {
+    std::uint32_t index = 0;
+    std::uint32_t subindex = 0;
+    SourcePos pos;
+};
+
 struct SlaveSpec {
     std::string name;
     SourcePos pos;
@@ -102,6 +109,7 @@ struct SlaveSpec {
     std::vector<SdoSpec> sdos;
     Limits limits;  // the device family's constraints (`limits:`, as in device sources)
     std::vector<Ros2InterfaceSpec> ros2_interfaces;
+    std::vector<ForcedEntry> force_entries;
 };
 
 struct NetworkSpec {
