@@ -193,3 +193,27 @@ TEST(EniImport, TextFromTheEniStaysText) {
 }
 
 }  // namespace
+
+namespace {
+
+// An ENI that maps an entry the ESI marks not mappable (as EC-Engineer maps an Elmo drive's
+// 0x60FE:00) comes back with the entry under force_entries, and builds the same ENI again.
+TEST(EniImport, EntriesTheEsiDoesNotMapAreForced) {
+    ESI_REQUIRE_CORPUS();
+    const std::string yaml = "master: { name: Line, cycle_time_us: 1000 }\nslaves:\n  - name: Axis\n    product_code: 0x00030924\n"
+                             "    revision: 0x00010420\n    pdos: [0x1607, 0x1A07]\n"
+                             "    pdo_entries: { 0x1607: [0x607A:0:32, 0x60FE:0x00:8], 0x1A07: [0x6064:0:32] }\n"
+                             "    force_entries: [0x60FE:0x00]\n";
+    const esi::net::BuildResult first = esi::test::build_corpus_network(yaml);
+    ASSERT_TRUE(first.network) << esi::test::diagnostics_text(first.diagnostics);
+    const std::string eni = esi::net::write_eni(*first.network);
+    const esi::net::EniImport imported = esi::net::network_from_eni(eni, "forced.xml", esi::test::corpus_index(), {});
+    ASSERT_FALSE(imported.yaml.empty()) << esi::test::diagnostics_text(imported.diagnostics);
+    EXPECT_NE(imported.yaml.find("force_entries: [0x60FE:0x00]"), std::string::npos) << imported.yaml;
+    EXPECT_NE(esi::test::diagnostics_text(imported.diagnostics).find("[net-eni-forced]"), std::string::npos);
+    const esi::net::BuildResult second = esi::test::build_corpus_network(imported.yaml);
+    ASSERT_TRUE(second.network) << esi::test::diagnostics_text(second.diagnostics);
+    EXPECT_EQ(esi::net::write_eni(*second.network), eni);
+}
+
+}  // namespace

@@ -11,6 +11,7 @@
 #include <algorithm>
 
 #include "eni_facts.hpp"
+#include "ros2_interfaces_spec.hpp"
 #include "esi/net/network.hpp"
 #include "esi/net/resolve.hpp"
 #include "slave_context.hpp"
@@ -89,6 +90,11 @@ std::string render(const EniFacts& facts, const MasterSpec& master, const std::v
                     list += fmt::format("{}{}:0x{:02X}:{}", list.empty() ? "" : ", ", hex(e.index, 4), e.subindex, e.bit_len);
                 y += in + "  " + hex(p.pdo, 4) + ": [" + list + "]\n";
             }
+        }
+        if (!ss.force_entries.empty()) {
+            std::string list;
+            for (const ForcedEntry& f : ss.force_entries) list += fmt::format("{}{}:0x{:02X}", list.empty() ? "" : ", ", hex(f.index, 4), f.subindex);
+            y += in + "force_entries: [" + list + "]\n";
         }
         if (ss.dc) y += in + "dc: " + yaml_quoted(*ss.dc) + "\n";
         if (!ss.sdos.empty()) {
@@ -196,6 +202,35 @@ EniImport network_from_eni(std::string_view xml, const std::string& path, const 
                                                    s.spec.name, s.eni->assign_activate, built.dc ? built.dc->op_mode : "no DC"),
                                        path, SourcePos{s.eni->line, 1});
     });
+    // 2b. Entries the ENI maps although the ESI marks them not mappable: the tool that wrote it
+    // mapped them (EC-Engineer maps an Elmo drive's 0x60FE:00), so the network forces them.
+    for (int round = 0; round < 4; ++round) {
+        const BuildResult trial = build_network(spec_of(path, master, slaves), index);
+        if (trial.network) break;
+        bool forced = false;
+        for (const Diagnostic& d : trial.diagnostics) {
+            std::uint32_t entry_index = 0, entry_sub = 0;
+            if (d.rule != "net-entry-not-mappable" || !parse_entry_key(std::string_view(d.message).substr(0, d.message.find(' ')), entry_index, entry_sub))
+                continue;
+            for (ImportedSlave& s : slaves) {
+                if (!s.known) continue;
+                const bool maps = std::any_of(s.spec.pdo_entries.begin(), s.spec.pdo_entries.end(), [&](const PdoEntriesSpec& p) {
+                    return std::any_of(p.entries.begin(), p.entries.end(), [&](const PdoEntrySpec& e) { return e.index == entry_index && e.subindex == entry_sub; });
+                });
+                const bool already = std::any_of(s.spec.force_entries.begin(), s.spec.force_entries.end(),
+                                                 [&](const ForcedEntry& f) { return f.index == entry_index && f.subindex == entry_sub; });
+                if (!maps || already) continue;
+                s.spec.force_entries.push_back({entry_index, entry_sub, {}});
+                forced = true;
+                result.diagnostics.emplace(Severity::warning, "net-eni-forced",
+                                           fmt::format("slave '{}': the ENI maps {}:{:02X}, which the ESI marks not mappable; the network "
+                                                       "forces it (force_entries)",
+                                                       s.spec.name, hex_index(entry_index), entry_sub),
+                                           path, SourcePos{s.eni->line, 1});
+            }
+        }
+        if (!forced) break;
+    }
     // 3. The CoE start-up commands the ESI does not imply.
     if (!(n = build())) return result;
     for_each_known(*n, [&](ImportedSlave& s, const NetworkSlave& built) {
