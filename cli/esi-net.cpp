@@ -1,7 +1,9 @@
 // esi-net: master-side configuration from ESI files (docs/esi-net.md).
-//   esi-net build NETWORK.yaml -o OUTDIR [--only eni,igh,lcec,map,html] [--esi PATH...] [--templates DIR...]
+//   esi-net build NETWORK.yaml -o OUTDIR [--only eni,igh,lcec,map,html,ros2] [--esi PATH...] [--templates DIR...]
 //   esi-net init --from-igh SLAVES.txt [--esi PATH...] -o NETWORK.yaml
+//   esi-net init --from-eni network.xml --esi PATH... [--omit-unknown] -o NETWORK.yaml
 //   esi-net find [--esi PATH...] VENDOR:PRODUCT[:REVISION] | NAME
+//   esi-net check [--network NETWORK.yaml] [--esi PATH...] [--igh-slaves F] [--igh-pdos F] [--soem F] [--sii N=F] [--format text|json]
 // Exit codes: 0 done; 1 the network has errors (an unknown device, a PDO selection the ESI
 // forbids …) or nothing was found or written; 2 usage error or an unreadable or invalid input
 // file. Nothing is written on error.
@@ -20,11 +22,15 @@
 #include "esi/doc/process_image_page.hpp"
 #include "esi/io/atomic_write.hpp"
 #include "esi/io/read_file.hpp"
+#include "esi/net/bus_check.hpp"
+#include "esi/net/bus_dump.hpp"
+#include "esi/net/eni_import.hpp"
 #include "esi/net/igh_scan.hpp"
 #include "esi/net/library_index.hpp"
 #include "esi/net/network.hpp"
 #include "esi/net/outputs.hpp"
 #include "esi/net/resolve.hpp"
+#include "esi/net/ros2_config.hpp"
 
 namespace {
 
@@ -81,6 +87,15 @@ int run_build(const std::string& network_path, const std::string& output_dir, co
         }
         std::move(page.files.begin(), page.files.end(), std::back_inserter(files));
     }
+    if (std::find(kinds->begin(), kinds->end(), esi::net::OutputKind::ros2) != kinds->end()) {
+        esi::net::Ros2Output ros2 = esi::net::ros2_outputs(*built.network, output_dir);
+        print(ros2.diagnostics);
+        if (ros2.diagnostics.has_errors()) {
+            std::cerr << "esi-net build: " << network_path << ": nothing written (leave ros2 out with --only)\n";
+            return exit_findings;
+        }
+        std::move(ros2.files.begin(), ros2.files.end(), std::back_inserter(files));
+    }
     const esi::Diagnostics written = esi::write_files_atomically(files);
     print(written);
     return written.has_errors() ? exit_findings : exit_ok;
@@ -136,10 +151,153 @@ int run_init(const std::string& scan_path, const std::string& output, const std:
     return written.has_errors() ? exit_findings : exit_ok;
 }
 
+int run_init_from_eni(const std::string& eni_path, const std::string& output, const std::vector<std::string>& esi, bool no_cache,
+                      bool omit_unknown) {
+    std::string error;
+    const std::optional<std::string> text = esi::read_file_bytes(eni_path, error);
+    if (!text) {
+        std::cerr << "esi-net init: " << eni_path << ": " << error << "\n";
+        return exit_usage;
+    }
+    if (esi.empty()) {
+        std::cerr << "esi-net init --from-eni: give the ESI library with --esi PATH (the network says only what the ESI does not)\n";
+        return exit_usage;
+    }
+    const esi::net::IndexResult indexed = esi::net::build_library_index(paths(esi), index_options(no_cache));
+    print(indexed.diagnostics);
+    if (indexed.diagnostics.has_errors()) return exit_usage;
+    esi::net::EniImportOptions options;
+    options.esi = esi;
+    options.omit_unknown = omit_unknown;
+    const esi::net::EniImport imported = esi::net::network_from_eni(*text, eni_path, indexed.index, options);
+    print(imported.diagnostics);
+    if (imported.yaml.empty()) {
+        std::cerr << "esi-net init: " << eni_path << ": nothing written\n";
+        return imported.diagnostics.has_errors() ? exit_usage : exit_findings;
+    }
+    const esi::Diagnostics written = esi::write_file_atomically(output, imported.yaml);
+    print(written);
+    return written.has_errors() ? exit_findings : exit_ok;
+}
+
+struct CheckInputs {
+    std::string network, igh_slaves, igh_pdos, soem, format = "text";
+    std::vector<std::string> sii;  // POSITION=FILE
+};
+
+int run_check(const CheckInputs& in, const std::vector<std::string>& esi, bool no_cache) {
+    if (in.format != "text" && in.format != "json") {
+        std::cerr << "esi-net check: --format is text or json\n";
+        return exit_usage;
+    }
+    std::vector<std::vector<esi::net::BusSlave>> dumps;
+    esi::Diagnostics read_problems;
+    auto read = [&](const std::string& path, auto parse) -> bool {
+        if (path.empty()) return true;
+        std::string error;
+        const std::optional<std::string> text = esi::read_file_bytes(path, error);
+        if (!text) {
+            std::cerr << "esi-net check: " << path << ": " << error << "\n";
+            return false;
+        }
+        esi::net::BusDump dump = parse(*text, path);
+        read_problems.append(dump.diagnostics);
+        dumps.push_back(std::move(dump.slaves));
+        return true;
+    };
+    if (!read(in.soem, esi::net::parse_soem_slaveinfo) || !read(in.igh_pdos, esi::net::parse_igh_pdos)) return exit_usage;
+    if (!in.igh_slaves.empty()) {
+        std::string error;
+        const std::optional<std::string> text = esi::read_file_bytes(in.igh_slaves, error);
+        if (!text) {
+            std::cerr << "esi-net check: " << in.igh_slaves << ": " << error << "\n";
+            return exit_usage;
+        }
+        const esi::net::IghScan scan = esi::net::parse_igh_slaves(*text, in.igh_slaves);
+        read_problems.append(scan.diagnostics);
+        std::vector<esi::net::BusSlave> slaves;
+        for (const esi::net::ScannedSlave& s : scan.slaves) {
+            esi::net::BusSlave b;
+            b.position = s.position;
+            b.vendor_id = s.vendor_id;
+            b.product_code = s.product_code;
+            b.revision = s.revision;
+            b.name = s.device_name;
+            b.source = in.igh_slaves;
+            b.pos = s.pos;
+            slaves.push_back(std::move(b));
+        }
+        dumps.insert(dumps.begin(), std::move(slaves));  // identities first
+    }
+    std::vector<esi::net::SiiDump> sii;
+    for (const std::string& arg : in.sii) {
+        const std::size_t eq = arg.find('=');
+        esi::net::SiiDump d;
+        std::string error;
+        try {
+            if (eq == std::string::npos) throw std::invalid_argument("no '='");
+            d.position = std::stoul(arg.substr(0, eq));
+        } catch (const std::exception&) {
+            std::cerr << "esi-net check: --sii takes POSITION=FILE (the output of `ethercat sii_read -p POSITION`), not '" << arg << "'\n";
+            return exit_usage;
+        }
+        d.path = arg.substr(eq + 1);
+        const std::optional<std::string> bytes = esi::read_file_bytes(d.path, error);
+        if (!bytes) {
+            std::cerr << "esi-net check: " << d.path << ": " << error << "\n";
+            return exit_usage;
+        }
+        d.bytes.assign(bytes->begin(), bytes->end());
+        sii.push_back(std::move(d));
+    }
+    print(read_problems);
+    if (read_problems.has_errors()) return exit_usage;
+    if (dumps.empty() && sii.empty()) {
+        std::cerr << "esi-net check: give what the bus reports: --soem, --igh-pdos, --igh-slaves and/or --sii\n";
+        return exit_usage;
+    }
+    std::optional<esi::net::Network> network;
+    std::vector<std::string> library = esi;
+    esi::net::IndexOptions index_opts = index_options(no_cache);
+    if (!in.network.empty()) {
+        const esi::net::NetworkFileResult spec = esi::net::read_network_file(in.network);
+        print(spec.diagnostics);
+        if (!spec.spec) return exit_usage;
+        esi::net::BuildOptions options;
+        options.extra_esi = paths(esi);
+        options.index = index_opts;
+        esi::net::BuildResult built = esi::net::build_network(*spec.spec, options);
+        print(built.diagnostics);
+        if (!built.network) return exit_findings;
+        network = std::move(built.network);
+        const fs::path base = fs::path(in.network).parent_path();
+        for (const std::string& e : spec.spec->esi) library.push_back(fs::path(e).is_absolute() ? e : (base / e).string());
+    }
+    if (library.empty()) {
+        std::cerr << "esi-net check: give the ESI library with --esi PATH (or a --network whose esi: names it)\n";
+        return exit_usage;
+    }
+    const esi::net::IndexResult indexed = esi::net::build_library_index(paths(library), index_opts);
+    print(indexed.diagnostics);
+    if (indexed.diagnostics.has_errors()) return exit_usage;
+    const esi::net::CheckResult result = esi::net::check_bus(esi::net::merge_bus_dumps(dumps), sii, network ? &*network : nullptr, indexed.index);
+    if (in.format == "json") {
+        esi::cli::write_stdout(esi::net::check_result_json(result));
+    } else {
+        std::string out;
+        for (const esi::net::CheckedSlave& s : result.slaves)
+            out += fmt::format("slave {} {}: {}{}\n", s.position, s.name.empty() ? "?" : s.name, s.esi.empty() ? "no ESI" : s.esi,
+                               s.findings ? fmt::format(", {} finding{}", s.findings, s.findings == 1 ? "" : "s") : ", as the ESI says");
+        esi::cli::write_stdout(out);
+        print(result.findings);
+    }
+    return result.findings.has_errors() ? exit_findings : exit_ok;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"esi-net: master configuration (ENI, IgH C, linuxcnc-ethercat, process-image map) from ESI files"};
+    CLI::App app{"esi-net: master configuration (ENI, IgH C, linuxcnc-ethercat, ROS 2, process-image map) from ESI files"};
     app.require_subcommand(1);
     esi::cli::add_version_flag(app, "esi-net");
 
@@ -150,16 +308,31 @@ int main(int argc, char** argv) {
     CLI::App* build = app.add_subcommand("build", "write the master configuration of a network");
     build->add_option("network", build_network_path, "NETWORK.yaml")->required();
     build->add_option("-o,--output", build_output, "output directory (created when missing)")->required();
-    build->add_option("--only", build_only, "output kinds, comma-separated: eni, igh, lcec, map, html (default: all)");
+    build->add_option("--only", build_only, "output kinds, comma-separated: eni, igh, lcec, map, html, ros2 (default: all)");
     build->add_option("--esi", build_esi, "more ESI files or folders to look in (repeatable)");
     std::vector<std::string> build_templates;
     build->add_option("--templates", build_templates, "directory searched for the html page's templates before the built-in ones (repeatable)");
 
     std::string scan_path, init_output;
-    CLI::App* init = app.add_subcommand("init", "write a NETWORK.yaml from a bus scan");
-    init->add_option("--from-igh", scan_path, "output of the IgH master's `ethercat slaves -v`")->required();
+    std::string eni_path;
+    bool omit_unknown = false;
+    CLI::App* init = app.add_subcommand("init", "write a NETWORK.yaml from a bus scan or an ENI");
+    CLI::Option* from_igh = init->add_option("--from-igh", scan_path, "output of the IgH master's `ethercat slaves -v`");
+    init->add_option("--from-eni", eni_path, "an ENI (network.xml) of TwinCAT, EC-Engineer or esi-net; needs --esi")->excludes(from_igh);
+    init->add_flag("--omit-unknown", omit_unknown, "--from-eni: write slaves no ESI describes as comments");
     init->add_option("--esi", init_esi, "ESI files or folders to name the devices from (repeatable)");
     init->add_option("-o,--output", init_output, "NETWORK.yaml to write")->required();
+
+    CheckInputs check_inputs;
+    std::vector<std::string> check_esi;
+    CLI::App* check = app.add_subcommand("check", "compare what a running bus reports with the ESI files and the network");
+    check->add_option("--network", check_inputs.network, "NETWORK.yaml the bus should match (default: each device's ESI defaults)");
+    check->add_option("--esi", check_esi, "ESI files or folders (repeatable)");
+    check->add_option("--igh-slaves", check_inputs.igh_slaves, "output of IgH's `ethercat slaves -v`");
+    check->add_option("--igh-pdos", check_inputs.igh_pdos, "output of IgH's `ethercat pdos`");
+    check->add_option("--soem", check_inputs.soem, "output of SOEM's `slaveinfo IF -map`");
+    check->add_option("--sii", check_inputs.sii, "POSITION=FILE: an SII image (`ethercat sii_read -p POSITION`), repeatable");
+    check->add_option("--format", check_inputs.format, "text (default) or json");
 
     std::string query;
     CLI::App* find = app.add_subcommand("find", "which ESI file describes a device");
@@ -173,7 +346,15 @@ int main(int argc, char** argv) {
         const std::vector<fs::path> template_dirs = esi::doc::template_search_path(user_dirs, esi::cli::executable_path(argc > 0 ? argv[0] : nullptr));
         return run_build(build_network_path, build_output, build_only, build_esi, no_cache, template_dirs);
     }
-    if (init->parsed()) return run_init(scan_path, init_output, init_esi, no_cache);
+    if (init->parsed()) {
+        if (!eni_path.empty()) return run_init_from_eni(eni_path, init_output, init_esi, no_cache, omit_unknown);
+        if (scan_path.empty()) {
+            std::cerr << "esi-net init: give --from-igh SLAVES.txt or --from-eni network.xml\n";
+            return exit_usage;
+        }
+        return run_init(scan_path, init_output, init_esi, no_cache);
+    }
     if (find->parsed()) return run_find(query, find_esi, no_cache);
+    if (check->parsed()) return run_check(check_inputs, check_esi, no_cache);
     return exit_usage;
 }

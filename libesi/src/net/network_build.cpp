@@ -50,6 +50,7 @@ BuildResult build_network(const NetworkSpec& spec, const LibraryIndex& index) {
     Diagnostics& diagnostics = result.diagnostics;
     Network net;
     net.name = fs::path(spec.path).stem().string();
+    net.path = spec.path;
     net.master = spec.master;
     DocumentStore store;
 
@@ -91,6 +92,7 @@ BuildResult build_network(const NetworkSpec& spec, const LibraryIndex& index) {
         slave.product_code = device->type.product_code.value_or(0);
         slave.revision = device->type.revision_no.value_or(0);
         slave.physics = device->physics;
+        slave.ros2_interfaces = ss.ros2_interfaces;
 
         Limits limits;
         for (const auto& [selector, device_limits] : loaded->device_limits)
@@ -103,10 +105,12 @@ BuildResult build_network(const NetworkSpec& spec, const LibraryIndex& index) {
         setup_sync_managers(context);
         setup_dc(context, spec.master);
         build_coe_init_cmds(context, spec.master);
+        check_ros2_interfaces(context);
         net.slaves.push_back(std::move(slave));
     }
     if (spec.slaves.empty())
         diagnostics.emplace(Severity::warning, "net-empty", "the network has no slaves; only the master is configured", spec.path, {});
+    check_topology(net, spec, diagnostics);
     if (diagnostics.has_errors()) return result;
 
     for (NetworkSlave& s : net.slaves)

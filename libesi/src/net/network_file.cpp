@@ -10,6 +10,7 @@
 #include "esi/yaml/limits.hpp"
 #include "esi/yaml/reader.hpp"
 #include "esi/yaml/tree.hpp"
+#include "ros2_interfaces_spec.hpp"
 
 namespace esi::net {
 
@@ -264,6 +265,8 @@ private:
             }
         }
         if (const Node* n = f->find("limits")) s.limits = yaml::read_limits(reader_, *n);
+        if (const Node* n = f->find("ros2_interfaces")) s.ros2_interfaces = read_ros2_interfaces(reader_, *n);
+        if (const Node* n = f->find("force_entries")) s.force_entries = read_forced_entries(reader_, *n);
     }
 
     yaml::Reader reader_;

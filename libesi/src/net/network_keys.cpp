@@ -7,8 +7,10 @@ namespace {
 constexpr std::string_view root_keys[] = {"esi", "master", "slaves"};
 constexpr std::string_view master_keys[] = {"name", "cycle_time_us", "dc", "source_mac"};
 constexpr std::string_view slave_keys[] = {"name",   "device",      "vendor_id", "product_code", "revision", "alias", "pdos",
-                                           "pdo_mapping", "pdo_entries", "dc",   "modules",  "sdos",  "limits"};
+                                           "pdo_mapping", "pdo_entries", "dc",   "modules",  "sdos",  "limits",
+                                           "ros2_interfaces", "force_entries"};
 constexpr std::string_view module_keys[] = {"slot", "module"};
+constexpr std::string_view ros2_interface_keys[] = {"name", "factor", "offset", "default"};
 constexpr std::string_view sdo_keys[] = {"index", "subindex", "value", "type", "data", "transition", "complete_access", "comment"};
 
 constexpr NetworkContextKeys contexts[] = {
@@ -17,6 +19,7 @@ constexpr NetworkContextKeys contexts[] = {
     {NetworkContext::slave, "slave", slave_keys},
     {NetworkContext::module, "module", module_keys},
     {NetworkContext::sdo, "sdo", sdo_keys},
+    {NetworkContext::ros2_interface, "ros2_interface", ros2_interface_keys},
 };
 
 }  // namespace

@@ -6,7 +6,7 @@ namespace esi::net {
 
 namespace {
 
-constexpr OutputKind kinds[] = {OutputKind::eni, OutputKind::igh, OutputKind::lcec, OutputKind::map, OutputKind::html};
+constexpr OutputKind kinds[] = {OutputKind::eni, OutputKind::igh, OutputKind::lcec, OutputKind::map, OutputKind::html, OutputKind::ros2};
 
 }  // namespace
 
@@ -19,6 +19,7 @@ std::string_view to_string(OutputKind kind) {
         case OutputKind::lcec: return "lcec";
         case OutputKind::map: return "map";
         case OutputKind::html: return "html";
+        case OutputKind::ros2: return "ros2";
     }
     return "?";
 }
@@ -30,7 +31,7 @@ std::optional<std::vector<OutputKind>> parse_output_kinds(std::string_view text,
         const std::string_view name = text.substr(0, comma);
         const auto it = std::find_if(std::begin(kinds), std::end(kinds), [&](OutputKind k) { return to_string(k) == name; });
         if (it == std::end(kinds)) {
-            error = "'" + std::string(name) + "' is not an output kind (eni, igh, lcec, map, html)";
+            error = "'" + std::string(name) + "' is not an output kind (eni, igh, lcec, map, html, ros2)";
             return std::nullopt;
         }
         if (std::find(out.begin(), out.end(), *it) == out.end()) out.push_back(*it);

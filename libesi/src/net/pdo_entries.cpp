@@ -36,6 +36,16 @@ std::string subindex_list(const ObjectLayout& layout) {
     return out;
 }
 
+bool restates_entries(const ConfiguredPdo& pdo, const PdoEntriesSpec& spec) {
+    if (pdo.entries.size() != spec.entries.size()) return false;
+    for (std::size_t i = 0; i < spec.entries.size(); ++i) {
+        const ConfiguredEntry& have = pdo.entries[i];
+        const PdoEntrySpec& want = spec.entries[i];
+        if (have.index != want.index || have.bit_len != want.bit_len || (want.index != 0 && have.subindex != want.subindex)) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 void configure_pdo_entries(SlaveContext& c) {
@@ -50,6 +60,9 @@ void configure_pdo_entries(SlaveContext& c) {
         }
         ConfiguredPdo& pdo = *it;
         if (pdo.fixed) {
+            // Restating a Fixed PDO's entries exactly as the ESI declares them is no change (an
+            // ENI or a network written from one lists every assigned PDO's entries).
+            if (restates_entries(pdo, spec)) continue;
             c.error(spec.pos, "net-pdo-fixed", fmt::format("PDO {} is Fixed in the ESI; its entries cannot be changed", hex_index(spec.pdo)));
             continue;
         }
@@ -109,11 +122,23 @@ void configure_pdo_entries(SlaveContext& c) {
                 ok = false;
             }
             if (!flag_allows(entry->flags, pdo.direction) && !mapped_by_esi(c.device, pdo.direction, e.index, e.subindex)) {
-                c.error(e.pos, "net-entry-not-mappable",
-                        fmt::format("{} ({}) cannot be mapped into a{} (its PdoMapping flag is '{}')", where, entry->name,
-                                    pdo.direction == PdoDirection::rx ? "n RxPDO" : " TxPDO",
-                                    entry->flags && entry->flags->pdo_mapping ? *entry->flags->pdo_mapping : std::string("none")));
-                ok = false;
+                const std::string flag = entry->flags && entry->flags->pdo_mapping ? *entry->flags->pdo_mapping : std::string("none");
+                const char* into = pdo.direction == PdoDirection::rx ? "n RxPDO" : " TxPDO";
+                const auto forced = std::find_if(c.spec.force_entries.begin(), c.spec.force_entries.end(),
+                                                 [&](const ForcedEntry& f) { return f.index == e.index && f.subindex == e.subindex; });
+                if (forced != c.spec.force_entries.end()) {
+                    c.warning(e.pos, "net-entry-forced",
+                              fmt::format("{} ({}) is mapped into a{} although its PdoMapping flag is '{}' (force_entries): the device "
+                                          "refuses the mapping unless its firmware allows it",
+                                          where, entry->name, into, flag));
+                } else {
+                    Diagnostic& d = c.error(e.pos, "net-entry-not-mappable",
+                                            fmt::format("{} ({}) cannot be mapped into a{} (its PdoMapping flag is '{}')", where, entry->name, into, flag));
+                    d.notes.push_back({c.network.path, e.pos,
+                                       fmt::format("if the device's firmware maps it anyway, list it under the slave's force_entries: [{}:{:02X}]",
+                                                   hex_index(e.index), e.subindex)});
+                    ok = false;
+                }
             }
             ce.name = layout.code == ObjectCode::var ? primary_text(object->names) : entry->name;
             ce.data_type = entry->type;

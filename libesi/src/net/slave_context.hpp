@@ -67,6 +67,11 @@ void configure_pdo_entries(SlaveContext& context);
 void setup_sync_managers(SlaveContext& context);
 void setup_dc(SlaveContext& context, const MasterSpec& master);
 void build_coe_init_cmds(SlaveContext& context, const MasterSpec& master);
+// ros2_interfaces name entries the slave maps (ros2_channels.cpp).
+void check_ros2_interfaces(SlaveContext& context);
+
+// E-Bus terminals after Ethernet-only devices and the converse (topology.cpp).
+void check_topology(const Network& network, const NetworkSpec& spec, Diagnostics& diagnostics);
 
 // The process image: slave offsets, frames, FMMU logical addresses, variables.
 void layout_process_image(Network& network, Diagnostics& diagnostics, const std::string& path);

@@ -162,6 +162,7 @@ struct NetworkSlave {
     std::uint32_t input_bytes = 0;
     std::uint32_t image_offset = 0;  // byte offset in both images
     std::size_t frame = 0;
+    std::vector<Ros2InterfaceSpec> ros2_interfaces;  // NETWORK.yaml's, for the ROS 2 output
     [[nodiscard]] std::uint32_t image_bytes() const { return output_bytes > input_bytes ? output_bytes : input_bytes; }
 };
 
@@ -209,6 +210,7 @@ struct ProcessImage {
 
 struct Network {
     std::string name;  // the network file's stem
+    std::string path;  // the network file, for diagnostics of the writers that can refuse
     MasterSpec master;
     std::vector<NetworkSlave> slaves;
     ProcessImage image;

@@ -9,7 +9,7 @@
 
 namespace esi::net {
 
-enum class NetworkContext { root, master, slave, module, sdo };
+enum class NetworkContext { root, master, slave, module, sdo, ros2_interface };
 
 struct NetworkContextKeys {
     NetworkContext context;

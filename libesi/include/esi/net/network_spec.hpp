@@ -67,6 +67,24 @@ struct SdoSpec {
     SourcePos transition_pos;
 };
 
+// ros2_interfaces: how the ethercat_driver_ros2 output names one mapped entry (docs/esi-net.md):
+// its interface name (none: `~`), and the driver's factor, offset and default.
+struct Ros2InterfaceSpec {
+    std::uint32_t index = 0;
+    std::uint32_t subindex = 0;
+    std::optional<std::string> name;  // absent with no_interface or when only numbers are given
+    bool no_interface = false;
+    std::optional<double> factor, offset, default_value;  // default may be NaN (.nan)
+    SourcePos pos;
+};
+
+// force_entries: an entry the ESI marks not mappable that the user knows the firmware maps.
+struct ForcedEntry {
+    std::uint32_t index = 0;
+    std::uint32_t subindex = 0;
+    SourcePos pos;
+};
+
 struct SlaveSpec {
     std::string name;
     SourcePos pos;
@@ -90,6 +108,8 @@ struct SlaveSpec {
     SourcePos modules_pos;
     std::vector<SdoSpec> sdos;
     Limits limits;  // the device family's constraints (`limits:`, as in device sources)
+    std::vector<Ros2InterfaceSpec> ros2_interfaces;
+    std::vector<ForcedEntry> force_entries;
 };
 
 struct NetworkSpec {
