@@ -1,6 +1,8 @@
 #include "cli_common.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "cli_reference.hpp"
@@ -66,6 +68,20 @@ std::optional<std::filesystem::path> executable_path(const char* argv0) {
 void write_stdout(std::string_view text) {
     std::fwrite(text.data(), 1, text.size(), stdout);
     std::fflush(stdout);
+}
+
+}  // namespace esi::cli
+
+namespace esi::cli {
+
+int exit_with_stdout_checked(std::string_view tool, int exit_code) {
+    std::cout.flush();
+    errno = 0;
+    const bool flushed = std::fflush(stdout) == 0;
+    const int error = errno;
+    if (flushed && !std::ferror(stdout) && std::cout.good()) return exit_code;
+    std::cerr << tool << ": cannot write standard output" << (error != 0 ? std::string(": ") + std::strerror(error) : std::string()) << "\n";
+    return exit_usage;
 }
 
 }  // namespace esi::cli

@@ -44,4 +44,10 @@ void add_version_flag(CLI::App& app, std::string_view tool);
 // Writes `text` to stdout whole and flushes.
 void write_stdout(std::string_view text);
 
+// Every tool's last step: flushes standard output (C stdio and std::cout) and checks that
+// everything written reached it. When it did not (a full disk, /dev/full, a closed pipe), says
+// so on stderr and gives exit_usage instead of `exit_code`, so lost output is never exit 0.
+//   int main(int argc, char** argv) { return esi::cli::exit_with_stdout_checked("esi-x", run(argc, argv)); }
+[[nodiscard]] int exit_with_stdout_checked(std::string_view tool, int exit_code);
+
 }  // namespace esi::cli

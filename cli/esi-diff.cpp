@@ -31,7 +31,9 @@ bool reaches(esi::Verdict verdict, const std::string& fail_on) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_tool(int argc, char** argv) {
     esi::cli::exit_with_code_two_when_out_of_memory("esi-diff");
     CLI::App app{"esi-diff: compare two EtherCAT ESI files semantically and classify every change"};
     std::string old_path;
@@ -100,3 +102,7 @@ int main(int argc, char** argv) {
     esi::cli::write_stdout(report);
     return reaches(result.verdict, fail_on) ? exit_findings : exit_ok;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return esi::cli::exit_with_stdout_checked("esi-diff", run_tool(argc, argv)); }

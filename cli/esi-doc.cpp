@@ -31,7 +31,9 @@ void print(const esi::Diagnostics& diagnostics) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_tool(int argc, char** argv) {
     CLI::App app{"esi-doc: HTML datasheets with process-data bit-layout pictures from an ESI file or YAML device source"};
     std::string source, output_dir, device, lang = "en";
     std::vector<std::string> template_dirs;
@@ -70,3 +72,7 @@ int main(int argc, char** argv) {
     print(written);
     return written.has_errors() ? exit_failed : exit_ok;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return esi::cli::exit_with_stdout_checked("esi-doc", run_tool(argc, argv)); }

@@ -60,7 +60,9 @@ int import_esi(const std::string& esi_path, const std::string& output, const std
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_tool(int argc, char** argv) {
     esi::cli::exit_with_code_two_when_out_of_memory("esi-gen");
     esi::install_leftover_cleanup();
     CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
@@ -153,3 +155,7 @@ int main(int argc, char** argv) {
     print(written);
     return written.has_errors() ? exit_failed : exit_ok;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return esi::cli::exit_with_stdout_checked("esi-gen", run_tool(argc, argv)); }

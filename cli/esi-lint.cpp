@@ -34,7 +34,9 @@ bool reaches(esi::Severity severity, const std::string& fail_on) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_tool(int argc, char** argv) {
     esi::cli::exit_with_code_two_when_out_of_memory("esi-lint");
     CLI::App app{"esi-lint: check EtherCAT ESI files against ETG rules and vendor limits"};
     std::vector<std::string> paths;
@@ -151,3 +153,7 @@ int main(int argc, char** argv) {
             if (reaches(d.severity, fail_on)) return exit_findings;
     return exit_ok;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return esi::cli::exit_with_stdout_checked("esi-lint", run_tool(argc, argv)); }

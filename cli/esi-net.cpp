@@ -96,7 +96,9 @@ int run_build(const std::string& network_path, const std::string& output_dir, co
         }
         std::move(ros2.files.begin(), ros2.files.end(), std::back_inserter(files));
     }
-    const esi::Diagnostics written = esi::write_files_atomically(files);
+    // One output set, as the other tools write theirs: under the directory's lock, replaced whole
+    // or not at all.
+    const esi::Diagnostics written = esi::write_output_set(output_dir, files);
     print(written);
     return written.has_errors() ? exit_findings : exit_ok;
 }
@@ -112,10 +114,17 @@ int run_find(const std::string& query_text, const std::vector<std::string>& esi,
         std::cerr << "esi-net find: give the ESI library with --esi PATH\n";
         return exit_usage;
     }
-    const esi::net::IndexResult indexed = esi::net::build_library_index(paths(esi), index_options(no_cache));
+    esi::net::IndexOptions options = index_options(no_cache);
+    esi::net::IndexResult indexed = esi::net::build_library_index(paths(esi), options);
+    esi::net::FindResult found = esi::net::find_devices(indexed.index, *query);
+    if (indexed.stats.cached > 0 && !esi::net::index_agrees_with_files(indexed.index, found.devices)) {
+        // What the cache said is not what the files hold: the answer comes from the files.
+        options.rescan = true;
+        indexed = esi::net::build_library_index(paths(esi), options);
+        found = esi::net::find_devices(indexed.index, *query);
+    }
     print(indexed.diagnostics);
     if (indexed.diagnostics.has_errors()) return exit_usage;
-    const esi::net::FindResult found = esi::net::find_devices(indexed.index, *query);
     print(found.diagnostics);
     std::string out;
     for (const esi::net::IndexedDevice* d : found.devices)
@@ -143,9 +152,19 @@ int run_init(const std::string& scan_path, const std::string& output, const std:
         index = std::move(indexed.index);
     }
     esi::net::InitOptions options;
-    options.esi = esi;
+    // `build` reads `esi:` relative to the network file, so that is how they are written.
+    const fs::path network_dir = fs::absolute(fs::path(output)).lexically_normal().parent_path();
+    for (const std::string& e : esi) {
+        const fs::path absolute = fs::absolute(e).lexically_normal();
+        const fs::path relative = absolute.lexically_relative(network_dir);
+        options.esi.push_back((relative.empty() ? absolute : relative).generic_string());
+    }
     const esi::net::InitResult init = esi::net::network_from_scan(scan, index ? &*index : nullptr, options);
     print(init.diagnostics);
+    if (init.diagnostics.has_errors()) {
+        std::cerr << "esi-net init: " << output << ": nothing written\n";
+        return exit_findings;
+    }
     const esi::Diagnostics written = esi::write_file_atomically(output, init.yaml);
     print(written);
     return written.has_errors() ? exit_findings : exit_ok;
@@ -296,7 +315,9 @@ int run_check(const CheckInputs& in, const std::vector<std::string>& esi, bool n
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_tool(int argc, char** argv) {
     CLI::App app{"esi-net: master configuration (ENI, IgH C, linuxcnc-ethercat, ROS 2, process-image map) from ESI files"};
     app.require_subcommand(1);
     esi::cli::add_version_flag(app, "esi-net");
@@ -358,3 +379,7 @@ int main(int argc, char** argv) {
     if (check->parsed()) return run_check(check_inputs, check_esi, no_cache);
     return exit_usage;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return esi::cli::exit_with_stdout_checked("esi-net", run_tool(argc, argv)); }

@@ -154,7 +154,9 @@ int run_check(const std::string& esi_path, const std::string& image_path) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace {
+
+int run_tool(int argc, char** argv) {
     esi::cli::exit_with_code_two_when_out_of_memory("esi-sii");
     esi::install_leftover_cleanup();
     CLI::App app{"esi-sii: build, dump and check SII EEPROM images"};
@@ -195,3 +197,7 @@ int main(int argc, char** argv) {
     if (check->parsed()) return run_check(check_esi, check_image);
     return exit_usage;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return esi::cli::exit_with_stdout_checked("esi-sii", run_tool(argc, argv)); }

@@ -6,7 +6,9 @@ and deleted element ranges, swapped attribute values, huge and negative numbers,
 declarations, deep nesting, XML 1.0 faults, splices of other files) and runs every tool on them,
 each run with a wall-time limit, an address-space limit and no core dumps:
 
-  esi-lint, esi-diff, esi-gen, esi-gen --import, esi-sii build, esi-sii dump, esi-sii check
+  esi-lint, esi-diff, esi-gen, esi-gen --import, esi-sii build, esi-sii dump, esi-sii check,
+  esi-net build, esi-net init, esi-doc (scripts/mutation_campaign_net.py: hostile networks, scans
+  and ESI libraries, and checks on what a successful run wrote)
 
 Each run is classified: exit code, crash (a signal such as SIGSEGV or SIGABRT), out of memory
 (std::bad_alloc under the limit), timeout; and checked for what must hold whatever the input:
@@ -39,9 +41,11 @@ import threading
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mutation_campaign_net as net  # noqa: E402
 TIME = "/usr/bin/time"  # GNU time, for the tool's own peak RSS (see execute)
 CRASH_SIGNALS = {signal.SIGSEGV, signal.SIGABRT, signal.SIGBUS, signal.SIGFPE, signal.SIGILL, signal.SIGSYS, signal.SIGTRAP}
-TOOLS = ["esi-lint", "esi-diff", "esi-gen", "esi-gen-import", "esi-sii-build", "esi-sii-dump", "esi-sii-check"]
+TOOLS = ["esi-lint", "esi-diff", "esi-gen", "esi-gen-import", "esi-sii-build", "esi-sii-dump", "esi-sii-check"] + net.NET_TOOLS
 
 
 # ---- inputs ---------------------------------------------------------------------------------
@@ -374,6 +378,8 @@ def mutated_source(rng, corpus, esi, device, workdir, yaml_share):
 
 def plan_run(tool, rng, corpus, tools, workdir):
     """Builds the inputs of run (tool, rng) in workdir and returns the Run."""
+    if tool in net.NET_TOOLS:
+        return net.plan(tool, rng, corpus, tools, workdir, write, mutate_yaml, Run, None)
     name, esi, codes = corpus.pick_esi(rng)
     device = ["--device", rng.choice(codes)] if codes and rng.random() < 0.8 else []
     if tool == "esi-lint":
@@ -514,7 +520,7 @@ def main():
         os.nice(10)  # a guest on a shared machine; children inherit it
     except OSError:
         pass
-    tools = {name: os.path.join(args.build, "cli", name) for name in ("esi-lint", "esi-diff", "esi-gen", "esi-sii")}
+    tools = {name: os.path.join(args.build, "cli", name) for name in ("esi-lint", "esi-diff", "esi-gen", "esi-sii", "esi-net", "esi-doc")}
     for path in tools.values():
         if not os.access(path, os.X_OK):
             sys.exit(f"mutation_campaign: {path} is missing; build the tools first")
@@ -554,6 +560,7 @@ def main():
             rng = random.Random(f"{args.seed}/{tool}/{index}")
             run = plan_run(tool, rng, corpus, tools, workdir)
             result = execute(run, workdir, args.timeout, args.memory_mb)
+            result["problems"] += net.check_outputs(run, result, workdir, os.path.abspath(args.shared), tools)
             bad = result["class"] != "exit" or result["problems"]
             if bad:
                 keep_finding(run, result, workdir, findings, index)
@@ -581,14 +588,24 @@ def main():
             with lock:
                 slots.append(slot)
 
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    signal.signal(signal.SIGTERM, interrupt)  # a campaign cut short by its time budget still reports
     work = [(t, i) for i in range(args.runs) for t in selected]
     done = 0
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        for future in concurrent.futures.as_completed([pool.submit(one, t, i) for t, i in work]):
-            future.result()
-            done += 1
-            if done % 1000 == 0:
-                print(f"{done}/{len(work)} runs, {time.monotonic() - started:.0f} s", flush=True)
+        futures = [pool.submit(one, t, i) for t, i in work]
+        try:
+            for future in concurrent.futures.as_completed(futures):
+                future.result()
+                done += 1
+                if done % 1000 == 0:
+                    print(f"{done}/{len(work)} runs, {time.monotonic() - started:.0f} s", flush=True)
+        except KeyboardInterrupt:  # SIGINT or SIGTERM: stop and summarise the runs done so far
+            for future in futures:
+                future.cancel()
+            print(f"interrupted after {done}/{len(work)} runs", flush=True)
 
     summary = {"seed": args.seed, "runs_per_tool": args.runs, "jobs": args.jobs, "timeout_s": args.timeout,
                "memory_mb": args.memory_mb, "wall_s": round(time.monotonic() - started), "tools": {}}

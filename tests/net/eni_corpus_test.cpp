@@ -175,7 +175,8 @@ TEST(EniCorpus, TwinCatCherryEcatModularDrive) {
     ESI_REQUIRE_CORPUS();
     // The ESI's defaults: slot 0 takes "csv -  axis" (ModuleIdent Default="1"), slot 1 stays empty.
     run_case({"cherry-embedded__CherryECAT__ECAT_CIA402_ENI.xml",
-              "master: { name: Device 2 (EtherCAT), cycle_time_us: 2000 }\nslaves:\n  - { name: Drive 1 (ECAT_CIA402), device: ECAT_CIA402 }\n",
+              "master: { name: Device 2 (EtherCAT), cycle_time_us: 2000 }\nslaves:\n  - { name: Drive 1 (ECAT_CIA402), device: ECAT_CIA402, esi_file: \"" +
+                  esi::test::cherry_esi_file() + "\" }\n",
               {{0, 0}}});
 }
 

@@ -26,6 +26,8 @@ esi::net::BuildResult build_corpus_network(const std::string& yaml, const std::s
     return esi::net::build_network(*read.spec, corpus_index());
 }
 
+std::string cherry_esi_file() { return (corpus_dir() / "eni" / "esi" / "cherry-embedded__CherryECAT__ECAT_CIA402_ESI.xml").string(); }
+
 std::string diagnostics_text(const esi::Diagnostics& diagnostics) {
     std::string out;
     for (const esi::Diagnostic& d : diagnostics) out += esi::format_diagnostic(d);
@@ -64,10 +66,13 @@ slaves:
       - { index: 0x6065, value: 10000, transition: [PS, SO] }
       - { index: 0x3FFF, type: UDINT, value: 0x12345678 }
 )"});
+        // Three corpus files describe ECAT_CIA402 and configure it differently: CherryECAT's export
+        // was made from the one in eni/esi.
         out.push_back({"cherry-modular", R"(master: { name: Device 2 (EtherCAT), cycle_time_us: 2000 }
 slaves:
   - name: Drive 1
     device: ECAT_CIA402
+    esi_file: ")" + cherry_esi_file() + R"("
     modules: [csv -  axis, csp - axis]
     sdos: [{ index: 0x6060, value: 9, transition: SO }]
 )"});

@@ -17,6 +17,8 @@ const esi::net::LibraryIndex& corpus_index();
 // Reads `yaml` as NETWORK.yaml (named `name`) and builds it against the corpus index; the
 // file's own `esi:` is not looked at. Read errors are returned as build diagnostics.
 esi::net::BuildResult build_corpus_network(const std::string& yaml, const std::string& name = "network.yaml");
+// CherryECAT's ECAT_CIA402 ESI (corpus/eni/esi), which the corpus networks pick by `esi_file:`.
+std::string cherry_esi_file();
 // All diagnostics as text, for failure messages.
 std::string diagnostics_text(const esi::Diagnostics& diagnostics);
 

@@ -22,6 +22,11 @@ enum class XmlTextKind {
 };
 
 void append_xml_escaped(std::string& out, std::string_view text, XmlTextKind kind);
+
+// Text for the parts of XML that take no escapes (a CDATA section, a comment): only what XML
+// 1.0 cannot carry is replaced, by U+FFFD as above (C0 controls but TAB, LF, CR; U+FFFE,
+// U+FFFF; invalid UTF-8). Markup stays as it is: the caller keeps "]]>" or "--" out.
+[[nodiscard]] std::string xml_chars_only(std::string_view text);
 [[nodiscard]] std::string xml_escaped(std::string_view text, XmlTextKind kind);
 
 }  // namespace esi

@@ -72,6 +72,28 @@ void append_xml_escaped(std::string& out, std::string_view text, XmlTextKind kin
     flush();
 }
 
+std::string xml_chars_only(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x80) {
+            if (const std::size_t n = valid_sequence(text, i); n != 0) {
+                out.append(text.substr(i, n));
+                i += n;
+                continue;
+            }
+            out += replacement_character;
+        } else if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+            out += replacement_character;
+        } else {
+            out += static_cast<char>(c);
+        }
+        ++i;
+    }
+    return out;
+}
+
 std::string xml_escaped(std::string_view text, XmlTextKind kind) {
     std::string out;
     out.reserve(text.size());

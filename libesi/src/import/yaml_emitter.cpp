@@ -1,5 +1,7 @@
 #include "import/yaml_emitter.hpp"
 
+#include "esi/yaml/quote.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -39,53 +41,13 @@ bool plain_safe(std::string_view s) {
     return true;
 }
 
-// Decodes one UTF-8 code point at s[i]; returns its length (1 for an invalid byte, with cp = byte).
-std::size_t decode(std::string_view s, std::size_t i, std::uint32_t& cp) {
-    const unsigned char c = static_cast<unsigned char>(s[i]);
-    std::size_t len = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 0;
-    if (len == 0 || i + len > s.size()) {
-        cp = c;
-        return 1;
-    }
-    cp = len == 1 ? c : len == 2 ? (c & 0x1Fu) : len == 3 ? (c & 0x0Fu) : (c & 0x07u);
-    for (std::size_t k = 1; k < len; ++k) {
-        const unsigned char d = static_cast<unsigned char>(s[i + k]);
-        if ((d & 0xC0) != 0x80) {
-            cp = c;
-            return 1;
-        }
-        cp = (cp << 6) | (d & 0x3Fu);
-    }
-    return len;
-}
-
 }  // namespace
 
 std::string quote_text(std::string_view text) {
     if (plain_safe(text)) return std::string(text);
-    std::string out = "\"";
-    for (std::size_t i = 0; i < text.size();) {
-        std::uint32_t cp = 0;
-        const std::size_t len = decode(text, i, cp);
-        char buffer[16];
-        if (cp == '"') out += "\\\"";
-        else if (cp == '\\') out += "\\\\";
-        else if (cp == '\n') out += "\\n";
-        else if (cp == '\t') out += "\\t";
-        else if (cp == '\r') out += "\\r";
-        else if (cp < 0x20 || cp == 0x7F || (cp >= 0x80 && cp < 0xA0) || (cp >= 0xD800 && cp < 0xE000) || cp == 0xFEFF ||
-                 cp == 0xFFFE || cp == 0xFFFF || (len == 1 && cp >= 0x80)) {
-            // Not printable in YAML (or not valid UTF-8): an escape keeps the code point.
-            if (cp <= 0xFF) std::snprintf(buffer, sizeof buffer, "\\x%02X", static_cast<unsigned>(cp));
-            else std::snprintf(buffer, sizeof buffer, "\\u%04X", static_cast<unsigned>(cp));
-            out += buffer;
-        } else {
-            out.append(text.substr(i, len));
-        }
-        i += len;
-    }
-    out += '"';
-    return out;
+    // One quoting for every YAML libesi writes; it escapes what the reader takes for a line
+    // break (NEL, U+2028, U+2029) too. ESI text comes decoded from the XML reader, so it is UTF-8.
+    return yaml::double_quoted(text).text;
 }
 
 YNode YNode::text(std::string_view t) { return raw(quote_text(t)); }

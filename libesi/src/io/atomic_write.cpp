@@ -152,6 +152,47 @@ bool commit(const std::filesystem::path& target, Staged& staged, std::string& er
     return true;
 }
 
+// The previous file at a target, kept under a second name while a set is renamed into place.
+struct Backup {
+    std::filesystem::path name;     // empty: the target did not exist (or could not be kept)
+    LeftoverRegistration leftover;  // removed if the run is interrupted
+};
+
+void keep_previous(const std::filesystem::path& target, Backup& backup) {
+    for (int attempt = 0; attempt < 16; ++attempt) {
+        std::filesystem::path name = temporary_name(target);
+        name += ".previous";
+        const io_detail::DeferredSignals deferred;  // linked and registered as one step
+        if (::link(target.c_str(), name.c_str()) == 0) {
+            backup.name = name;
+            backup.leftover = LeftoverRegistration(name, LeftoverKind::file);
+            return;
+        }
+        if (errno != EEXIST) return;  // no target (ENOENT), or a file system without hard links
+    }
+}
+
+// Puts the previous file back, or removes a target that did not exist before the run.
+void roll_back(const std::filesystem::path& target, Backup& backup) {
+    const io_detail::DeferredSignals deferred;
+    if (!backup.name.empty()) {
+        if (std::rename(backup.name.c_str(), target.c_str()) == 0) {
+            backup.name.clear();
+            backup.leftover.release();
+        }
+    } else {
+        ::unlink(target.c_str());
+    }
+}
+
+void drop(Backup& backup) {
+    if (backup.name.empty()) return;
+    const io_detail::DeferredSignals deferred;
+    ::unlink(backup.name.c_str());
+    backup.name.clear();
+    backup.leftover.release();
+}
+
 }  // namespace
 
 Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
@@ -187,18 +228,28 @@ Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
         discard_all();
         return diagnostics;
     }
-    // Every file is complete on disk; now move them into place.
+    // Every file is complete on disk; now move them into place. Each target that exists keeps a
+    // second name (a hard link) until the whole set is in place, so that a rename failing
+    // part-way (an immutable file, a full directory) rolls back what was already renamed and
+    // the previous set stays whole.
+    std::vector<Backup> backups(files.size());
+    for (std::size_t i = 0; i < files.size(); ++i)
+        if (!unchanged[i]) keep_previous(files[i].path, backups[i]);
     std::set<std::filesystem::path> directories;
     for (std::size_t i = 0; i < files.size(); ++i) {
         if (unchanged[i]) continue;
         std::string error;
         if (!commit(files[i].path, staged[i], error)) {
             diagnostics.emplace(Severity::error, "io-error", "cannot replace file: " + error, files[i].path.string(), {});
+            for (std::size_t j = i; j-- > 0;)
+                if (!unchanged[j]) roll_back(files[j].path, backups[j]);
+            for (Backup& b : backups) drop(b);
             discard_all();
             return diagnostics;
         }
         directories.insert(directory_of(files[i].path));
     }
+    for (Backup& b : backups) drop(b);
     created.keep();
     // Make the renames durable too: a crash right after returning must not bring back old files.
     for (const auto& dir : directories) {

@@ -1,5 +1,9 @@
 #include "esi/io/read_file.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstdio>
 #include <system_error>
@@ -46,6 +50,47 @@ std::optional<std::string> read_file_bytes(const std::filesystem::path& path, st
         error = "read error";
         return std::nullopt;
     }
+    return bytes;
+}
+
+std::optional<std::string> read_regular_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) {
+        error = std::error_code(errno, std::generic_category()).message();
+        return std::nullopt;
+    }
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        error = S_ISDIR(st.st_mode) ? "is a directory" : "not a regular file";
+        ::close(fd);
+        return std::nullopt;
+    }
+    if (static_cast<std::uint64_t>(st.st_size) > max_bytes) {
+        ::close(fd);
+        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+        return std::nullopt;
+    }
+    std::string bytes(static_cast<std::size_t>(st.st_size), '\0');
+    std::size_t have = 0;
+    for (;;) {
+        if (have == bytes.size()) bytes.resize(bytes.size() + (1 << 16));  // the file may have grown
+        const ssize_t n = ::read(fd, bytes.data() + have, bytes.size() - have);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) {
+            error = std::error_code(errno, std::generic_category()).message();
+            ::close(fd);
+            return std::nullopt;
+        }
+        if (n == 0) break;
+        have += static_cast<std::size_t>(n);
+        if (have > max_bytes) {
+            ::close(fd);
+            error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+            return std::nullopt;
+        }
+    }
+    ::close(fd);
+    bytes.resize(have);
     return bytes;
 }
 

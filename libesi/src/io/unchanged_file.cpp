@@ -11,7 +11,8 @@
 namespace esi::io_detail {
 
 bool holds_exactly(const std::filesystem::path& path, std::string_view content) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    // O_NONBLOCK: opening a FIFO in the target's place would otherwise wait for a writer.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) return false;
     struct stat info {};
     // The size first: most changed outputs differ in length, and a FIFO or device is never read.

@@ -2,11 +2,14 @@
 
 #include "esi/net/igh_scan.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <fmt/format.h>
 
+#include "esi/net/network_spec.hpp"
 #include "esi/net/resolve.hpp"
 #include "esi/number.hpp"
+#include "esi/yaml/quote.hpp"
 
 namespace esi::net {
 
@@ -25,20 +28,10 @@ std::optional<std::string_view> field(std::string_view line, std::string_view ke
     return trim(t.substr(key.size() + 1));
 }
 
-std::string comment_text(std::string_view text) {
-    std::string out;
-    for (char c : text) out += (c == '\n' || c == '\r') ? ' ' : c;
-    return out;
-}
-
-std::string yaml_string(std::string_view text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
+// Outside text (a device name from the bus, a Type text from an ESI) goes into a comment only
+// as a quoted scalar in printable ASCII: nothing it holds can end the comment's line, whatever
+// the reader takes for a line break (esi/yaml/quote.hpp).
+std::string comment_text(std::string_view text) { return yaml::double_quoted(text, true).text; }
 
 }  // namespace
 
@@ -49,10 +42,21 @@ IghScan parse_igh_slaves(std::string_view text, const std::string& path) {
     std::optional<std::uint32_t> first_master;
     std::uint32_t line_number = 0;
     bool other_master = false;
+    std::optional<std::uint32_t> last_position;
+    // A last line without its newline was cut: its value may be cut too (0x00001002 read as 0x0010).
+    if (!text.empty() && text.back() != '\n') {
+        const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+        scan.diagnostics.emplace(Severity::error, "net-scan", "the scan ends in the middle of a line; it was cut short", path,
+                                 SourcePos{static_cast<std::uint32_t>(lines), 1});
+    }
     auto finish = [&]() {
         if (!current) return;
         if (!current->vendor_id || !current->product_code)
             scan.diagnostics.emplace(Severity::error, "net-scan", "this slave's block has no 'Vendor Id' or 'Product code' line", path, current->pos);
+        else if (!current->revision)
+            // `ethercat slaves -v` always prints the revision: a block without it was cut.
+            scan.diagnostics.emplace(Severity::error, "net-scan", "this slave's block has no 'Revision number' line; is the scan cut short?", path,
+                                     current->pos);
         else if (current->master == *first_master) scan.slaves.push_back(*current);
         else other_master = true;
         current.reset();
@@ -69,6 +73,16 @@ IghScan parse_igh_slaves(std::string_view text, const std::string& path) {
             if (std::sscanf(l.c_str(), "=== Master %u, Slave %u ===", &master, &slave) == 2) {
                 finish();
                 if (!first_master) first_master = master;
+                if (master == *first_master) {
+                    // The network is the bus in position order: a position twice or out of order
+                    // is not one scan of one bus.
+                    if (last_position && slave <= *last_position)
+                        scan.diagnostics.emplace(Severity::error, "net-scan",
+                                                 fmt::format("slave position {} after position {}: positions must rise, each once", slave,
+                                                             *last_position),
+                                                 path, SourcePos{line_number, 1});
+                    last_position = slave;
+                }
                 current = ScannedSlave{};
                 current->master = master;
                 current->position = slave;
@@ -91,10 +105,17 @@ IghScan parse_igh_slaves(std::string_view text, const std::string& path) {
         else if (auto v = field(line, "Alias")) {
             std::optional<std::uint32_t> alias;
             number(*v, alias, "alias");
-            if (alias && *alias > 0 && *alias <= 0xFFFF) current->alias = static_cast<std::uint16_t>(*alias);
+            if (alias && *alias > 0xFFFF)
+                scan.diagnostics.emplace(Severity::error, "net-scan", fmt::format("alias {} does not fit the 16-bit station alias", *alias), path, pos);
+            else if (alias && *alias > 0) current->alias = static_cast<std::uint16_t>(*alias);
         }
     }
     finish();
+    if (scan.slaves.size() > max_network_slaves)
+        scan.diagnostics.emplace(Severity::error, "net-too-many-slaves",
+                                 fmt::format("{} slaves; an EtherCAT segment addresses at most {} (station addresses 1001 to 65535)",
+                                             scan.slaves.size(), max_network_slaves),
+                                 path, {});
     if (scan.slaves.empty() && !scan.diagnostics.has_errors())
         scan.diagnostics.emplace(Severity::error, "net-scan", "no '=== Master m, Slave n ===' block: not the output of `ethercat slaves -v`", path, {});
     if (other_master)
@@ -110,7 +131,12 @@ InitResult network_from_scan(const IghScan& scan, const LibraryIndex* index, con
                      scan.slaves.size() == 1 ? "" : "s");
     if (!options.esi.empty()) {
         y += "esi:\n";
-        for (const std::string& e : options.esi) y += "  - " + yaml_string(e) + "\n";
+        for (const std::string& e : options.esi) {
+            const yaml::QuotedText quoted = yaml::double_quoted(e);
+            if (!quoted.ok)
+                result.diagnostics.emplace(Severity::error, "net-path", "the ESI path is not UTF-8 text; YAML cannot hold it", e, {});
+            y += "  - " + quoted.text + "\n";
+        }
     } else {
         y += "esi: []  # ESI files or folders to build from (or --esi)\n";
     }
@@ -120,7 +146,7 @@ InitResult network_from_scan(const IghScan& scan, const LibraryIndex* index, con
     for (std::size_t i = 0; i < scan.slaves.size(); ++i) {
         const ScannedSlave& s = scan.slaves[i];
         y += fmt::format("  - name: D{}", i + 1);
-        if (!s.device_name.empty()) y += "  # " + comment_text(s.device_name);
+        if (!s.device_name.empty()) y += "  # scanned as " + comment_text(s.device_name);
         y += "\n";
         y += fmt::format("    vendor_id: 0x{:08X}\n", s.vendor_id.value_or(0));
         y += fmt::format("    product_code: 0x{:08X}\n", s.product_code.value_or(0));
@@ -137,7 +163,7 @@ InitResult network_from_scan(const IghScan& scan, const LibraryIndex* index, con
             result.diagnostics.add(std::move(d));
         } else {
             const IndexedDevice& d = *found.devices.front();
-            y += fmt::format("    # {} in {}\n", comment_text(d.type), comment_text(index->file_of(d).path));
+            y += fmt::format("    # ESI: {} in {}\n", comment_text(d.type), comment_text(index->file_of(d).path));
         }
     }
     return result;

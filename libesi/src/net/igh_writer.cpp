@@ -38,12 +38,51 @@ std::string identifier(std::string_view text) {
     return out;
 }
 
+// Text inside a C comment: printable ASCII and valid UTF-8 as it is; "/*" and "*/" split (a
+// nested opener is -Wcomment under -Wall, a closer ends the comment), "??" split so that no
+// trigraph (-trigraphs, C89) turns "??/" into a line splice; line breaks, controls, bidi
+// controls (-Wbidi-chars) and invalid UTF-8 written as <U+XXXX> / <xNN>.
 std::string comment(std::string_view text) {
     std::string out;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        if (text[i] == '*' && i + 1 < text.size() && text[i + 1] == '/') out += "* ";
-        else if (text[i] == '\n' || text[i] == '\r') out += ' ';
-        else out += text[i];
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if ((c == '/' && i + 1 < text.size() && text[i + 1] == '*') || (c == '*' && i + 1 < text.size() && text[i + 1] == '/') ||
+            (c == '?' && i + 1 < text.size() && text[i + 1] == '?')) {
+            out += static_cast<char>(c);
+            out += ' ';
+            ++i;
+            continue;
+        }
+        if (c >= 0x20 && c < 0x7F) {
+            out += static_cast<char>(c);
+            ++i;
+            continue;
+        }
+        std::uint32_t cp = 0;
+        std::size_t len = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+        if (len != 0 && i + len <= text.size()) {
+            cp = len == 2 ? (c & 0x1Fu) : len == 3 ? (c & 0x0Fu) : (c & 0x07u);
+            for (std::size_t k = 1; k < len && len != 0; ++k) {
+                const unsigned char d = static_cast<unsigned char>(text[i + k]);
+                if ((d & 0xC0) != 0x80) len = 0;
+                else cp = (cp << 6) | (d & 0x3Fu);
+            }
+        } else {
+            len = 0;
+        }
+        static constexpr std::uint32_t smallest[] = {0, 0, 0x80, 0x800, 0x10000};
+        if (len != 0 && (cp < smallest[len] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF))) len = 0;
+        const bool bidi = cp == 0x061C || cp == 0x200E || cp == 0x200F || (cp >= 0x202A && cp <= 0x202E) || (cp >= 0x2066 && cp <= 0x2069);
+        if (len == 0) {
+            out += fmt::format("<x{:02X}>", c);
+            ++i;
+        } else if (cp < 0xA0 || bidi || cp == 0x2028 || cp == 0x2029 || cp == 0xFEFF) {
+            out += fmt::format("<U+{:04X}>", cp);
+            i += len;
+        } else {
+            out.append(text.substr(i, len));
+            i += len;
+        }
     }
     return out;
 }

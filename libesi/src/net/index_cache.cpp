@@ -6,7 +6,23 @@ namespace esi::net {
 
 namespace {
 
-constexpr std::string_view header = "libesi-esi-index 1";
+constexpr std::string_view header = "libesi-esi-index 2";
+
+std::uint64_t fnv1a(std::string_view text) {
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    for (unsigned char c : text) {
+        h ^= c;
+        h *= 0x100000001b3ull;
+    }
+    return h;
+}
+
+std::string hex64(std::uint64_t v) {
+    static constexpr char digits[] = "0123456789abcdef";
+    std::string out(16, '0');
+    for (int i = 15; i >= 0; --i, v >>= 4) out[static_cast<std::size_t>(i)] = digits[v & 0xF];
+    return out;
+}
 
 std::string escape(std::string_view text) {
     std::string out;
@@ -87,8 +103,11 @@ std::optional<IndexCache> parse_index_cache(std::string_view text) {
         if (!line_opt) return std::nullopt;  // no end line: truncated
         std::string_view line = *line_opt;
         if (line.starts_with("end ")) {
+            std::string_view rest = line.substr(4);
+            const auto count_text = field(rest);
             std::size_t count = 0;
-            if (!number(line.substr(4), count) || count != cache.size()) return std::nullopt;
+            if (!count_text || !number(*count_text, count) || count != cache.size()) return std::nullopt;
+            if (rest != hex64(fnv1a(text.substr(0, pos - line.size() - 1)))) return std::nullopt;
             if (current && current->devices.size() != expected_devices) return std::nullopt;
             return pos == text.size() ? std::optional<IndexCache>(std::move(cache)) : std::nullopt;
         }
@@ -98,9 +117,9 @@ std::optional<IndexCache> parse_index_cache(std::string_view text) {
         if (kind == 'F') {
             if (current && current->devices.size() != expected_devices) return std::nullopt;
             CachedFile file;
-            const auto size = field(line), mtime = field(line), count = field(line);
-            if (!size || !mtime || !count || !number(*size, file.file.size) || !number(*mtime, file.file.mtime_ns) ||
-                !number(*count, expected_devices))
+            const auto size = field(line), mtime = field(line), ctime = field(line), inode = field(line), count = field(line);
+            if (!size || !mtime || !ctime || !inode || !count || !number(*size, file.file.size) || !number(*mtime, file.file.mtime_ns) ||
+                !number(*ctime, file.file.ctime_ns) || !number(*inode, file.file.inode) || !number(*count, expected_devices))
                 return std::nullopt;
             const auto path = unescape(line);
             if (!path || path->empty()) return std::nullopt;
@@ -141,7 +160,8 @@ std::string format_index_cache(const IndexCache& cache) {
     out += '\n';
     for (const auto& [path, entry] : cache) {
         out += "F " + std::to_string(entry.file.size) + ' ' + std::to_string(entry.file.mtime_ns) + ' ' +
-               std::to_string(entry.devices.size()) + ' ' + escape(path) + '\n';
+               std::to_string(entry.file.ctime_ns) + ' ' + std::to_string(entry.file.inode) + ' ' + std::to_string(entry.devices.size()) +
+               ' ' + escape(path) + '\n';
         if (!entry.file.problem.empty()) out += "P " + escape(entry.file.problem) + '\n';
         for (const IndexedDevice& d : entry.devices) {
             out += "D " + format_optional(d.vendor_id) + ' ' + format_optional(d.product_code) + ' ' +
@@ -150,7 +170,8 @@ std::string format_index_cache(const IndexCache& cache) {
                    '\n';
         }
     }
-    out += "end " + std::to_string(cache.size()) + '\n';
+    const std::uint64_t checksum = fnv1a(out);
+    out += "end " + std::to_string(cache.size()) + ' ' + hex64(checksum) + '\n';
     return out;
 }
 

@@ -1,13 +1,15 @@
 #pragma once
 // The on-disk form of the library index: one text file, one line per file and per device,
 // strictly parsed. Anything unexpected (another version, a truncated or edited file) makes
-// the whole cache unusable, and the index is rebuilt from the files.
+// the whole cache unusable, and the index is rebuilt from the files. The last line carries a
+// checksum (FNV-1a, 64 bits) of every line before it, so that an edited cache, however
+// well-formed, is not trusted either.
 //
-//   libesi-esi-index 1
-//   F <size> <mtime_ns> <device count> <path>
+//   libesi-esi-index 2
+//   F <size> <mtime_ns> <ctime_ns> <inode> <device count> <path>
 //   P <problem>                                   (optional, after F)
 //   D <vendor|-> <product|-> <revision|-> <offset> <line> <column> <ordinal> <type>\t<name>
-//   end <file count>
+//   end <file count> <checksum, 16 hex digits>
 //
 // Text fields escape '\\', tab and newline as \\\\, \\t and \\n.
 

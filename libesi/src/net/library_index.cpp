@@ -1,7 +1,10 @@
 #include "esi/net/library_index.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cstdlib>
+#include <map>
 #include <set>
 
 #include "esi/device_selector.hpp"
@@ -27,16 +30,28 @@ struct FoundFile {
     std::string path;
     std::uint64_t size = 0;
     std::int64_t mtime_ns = 0;
+    std::int64_t ctime_ns = 0;
+    std::uint64_t inode = 0;
+    std::size_t root = 0;
 };
 
-bool stat_file(const fs::path& path, FoundFile& out) {
-    std::error_code ec;
+// What the cache is keyed on. The change time cannot be set by a user: a file rewritten and
+// given back its size and modification time (`cp -p`, `touch -r`) still changes it.
+bool stat_file(const fs::path& path, FoundFile& out, std::string& why) {
     out.path = path.generic_string();
-    out.size = fs::file_size(path, ec);
-    if (ec) return false;
-    const auto mtime = fs::last_write_time(path, ec);
-    if (ec) return false;
-    out.mtime_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(mtime.time_since_epoch()).count();
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) {
+        why = "cannot read this file's size or time; not indexed";
+        return false;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        why = "not a regular file; not indexed";
+        return false;
+    }
+    out.size = static_cast<std::uint64_t>(st.st_size);
+    out.mtime_ns = static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1'000'000'000 + st.st_mtim.tv_nsec;
+    out.ctime_ns = static_cast<std::int64_t>(st.st_ctim.tv_sec) * 1'000'000'000 + st.st_ctim.tv_nsec;
+    out.inode = static_cast<std::uint64_t>(st.st_ino);
     return true;
 }
 
@@ -44,16 +59,20 @@ bool stat_file(const fs::path& path, FoundFile& out) {
 std::vector<FoundFile> find_files(const std::vector<fs::path>& roots, Diagnostics& diagnostics) {
     std::vector<FoundFile> found;
     std::set<std::string> seen;
+    std::size_t rank = 0;
     auto add = [&](const fs::path& path) {
         FoundFile file;
-        if (!stat_file(path, file)) {
-            diagnostics.emplace(Severity::warning, "net-index", "cannot read this file's size or time; not indexed",
-                                path.generic_string(), {});
+        std::string why;
+        if (!stat_file(path, file, why)) {
+            diagnostics.emplace(Severity::warning, "net-index", why, path.generic_string(), {});
             return;
         }
+        file.root = rank;
         if (seen.insert(file.path).second) found.push_back(std::move(file));
     };
-    for (const fs::path& root : roots) {
+    for (std::size_t r = 0; r < roots.size(); ++r) {
+        const fs::path& root = roots[r];
+        rank = r;
         std::error_code ec;
         const fs::file_status status = fs::status(root, ec);
         if (ec || !fs::exists(status)) {
@@ -107,22 +126,32 @@ CachedFile scan_yaml_source(const FoundFile& found) {
     return out;
 }
 
+void set_key(IndexedFile& file, const FoundFile& found) {
+    file.path = found.path;
+    file.size = found.size;
+    file.mtime_ns = found.mtime_ns;
+    file.ctime_ns = found.ctime_ns;
+    file.inode = found.inode;
+}
+
 CachedFile scan_file(const FoundFile& found) {
     if (has_extension(found.path, {".yaml", ".yml"})) {
         CachedFile out = scan_yaml_source(found);
-        out.file.path = found.path;
-        out.file.size = found.size;
-        out.file.mtime_ns = found.mtime_ns;
+        set_key(out.file, found);
         return out;
     }
     CachedFile out;
-    out.file.path = found.path;
-    out.file.size = found.size;
-    out.file.mtime_ns = found.mtime_ns;
+    set_key(out.file, found);
     std::string error;
-    std::optional<std::string> bytes = read_file_bytes(found.path, error);
+    std::optional<std::string> bytes = read_regular_file_bytes(found.path, error);
     if (!bytes) {
         out.file.problem = error;
+        return out;
+    }
+    // A file named .xml that is not XML (a note, a YAML text, nothing but blanks) would list no
+    // device without a word; the docs promise a warning for a file that cannot be indexed.
+    if (bytes->find('<') == std::string::npos || document_format(*bytes, found.path) != DocumentFormat::esi_xml) {
+        out.file.problem = "not XML (no markup at its start)";
         return out;
     }
     IdentityScan scan = scan_identities(std::move(*bytes));
@@ -158,7 +187,7 @@ std::optional<IndexCache> read_cache(const fs::path& file, bool& ignored) {
     std::error_code ec;
     if (!fs::exists(file, ec)) return std::nullopt;
     std::string error;
-    const std::optional<std::string> bytes = read_file_bytes(file, error);
+    const std::optional<std::string> bytes = read_regular_file_bytes(file, error);
     std::optional<IndexCache> cache = bytes ? parse_index_cache(*bytes) : std::nullopt;
     ignored = !cache.has_value();
     return cache;
@@ -172,7 +201,7 @@ std::optional<fs::path> default_cache_dir() {
     return std::nullopt;
 }
 
-fs::path index_cache_file(const fs::path& cache_dir) { return cache_dir / "esi-index.v1"; }
+fs::path index_cache_file(const fs::path& cache_dir) { return cache_dir / "esi-index.v2"; }
 
 IndexResult build_library_index(const std::vector<fs::path>& roots, const IndexOptions& options) {
     IndexResult result;
@@ -183,16 +212,22 @@ IndexResult build_library_index(const std::vector<fs::path>& roots, const IndexO
     std::optional<fs::path> cache_file;
     if (options.cache_dir) {
         cache_file = index_cache_file(*options.cache_dir);
-        if (auto read = read_cache(*cache_file, result.stats.cache_ignored)) cache = std::move(*read);
+        if (options.rescan) {
+            result.diagnostics.emplace(Severity::info, "net-index-cache",
+                                       "the index cache disagreed with a file; every file was indexed anew", cache_file->generic_string(), {});
+        } else if (auto read = read_cache(*cache_file, result.stats.cache_ignored)) {
+            cache = std::move(*read);
+        }
         if (result.stats.cache_ignored)
             result.diagnostics.emplace(Severity::info, "net-index-cache", "the index cache is unreadable or damaged; rebuilt",
                                        cache_file->generic_string(), {});
     }
 
-    bool changed = result.stats.cache_ignored;
+    bool changed = result.stats.cache_ignored || options.rescan;
     for (const FoundFile& f : found) {
         auto it = cache.find(f.path);
-        if (it != cache.end() && it->second.file.size == f.size && it->second.file.mtime_ns == f.mtime_ns) {
+        if (it != cache.end() && it->second.file.size == f.size && it->second.file.mtime_ns == f.mtime_ns &&
+            it->second.file.ctime_ns == f.ctime_ns && it->second.file.inode == f.inode) {
             ++result.stats.cached;
         } else {
             CachedFile scanned = scan_file(f);
@@ -204,6 +239,7 @@ IndexResult build_library_index(const std::vector<fs::path>& roots, const IndexO
         const CachedFile& entry = it->second;
         const std::size_t file_index = result.index.files.size();
         result.index.files.push_back(entry.file);
+        result.index.files.back().root = f.root;
         if (!entry.file.problem.empty())
             result.diagnostics.emplace(Severity::warning, "net-index", "not indexed: " + entry.file.problem, f.path, {});
         for (IndexedDevice d : entry.devices) {
@@ -222,6 +258,27 @@ IndexResult build_library_index(const std::vector<fs::path>& roots, const IndexO
         }
     }
     return result;
+}
+
+bool index_agrees_with_files(const LibraryIndex& index, const std::vector<const IndexedDevice*>& devices) {
+    std::map<std::size_t, std::vector<const IndexedDevice*>> by_file;
+    for (const IndexedDevice* d : devices) by_file[d->file].push_back(d);
+    for (const auto& [file_number, listed] : by_file) {
+        const IndexedFile& file = index.files[file_number];
+        FoundFile found;
+        std::string why;
+        if (!stat_file(file.path, found, why)) return false;
+        found.root = file.root;
+        const CachedFile now = scan_file(found);
+        for (const IndexedDevice* d : listed) {
+            if (d->ordinal >= now.devices.size()) return false;
+            const IndexedDevice& fresh = now.devices[d->ordinal];
+            if (fresh.vendor_id != d->vendor_id || fresh.product_code != d->product_code || fresh.revision_no != d->revision_no ||
+                fresh.type != d->type || fresh.offset != d->offset)
+                return false;
+        }
+    }
+    return true;
 }
 
 }  // namespace esi::net

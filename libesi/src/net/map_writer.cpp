@@ -25,18 +25,28 @@ std::vector<Row> rows(const Network& n) {
     return out;
 }
 
-std::string csv_field(const std::string& text) {
+// A cell a spreadsheet cannot take for a formula: one starting with = + - @ TAB or CR gets a
+// leading apostrophe, as OWASP recommends against CSV injection (docs/esi-net.md); then quoted
+// when it holds a separator, a quote or a line break (RFC 4180).
+std::string csv_field(const std::string& cell) {
+    const bool formula = !cell.empty() && std::string_view("=+-@\t\r").find(cell.front()) != std::string_view::npos;
+    const std::string text = formula ? "'" + cell : cell;
     if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
     std::string out = "\"";
     for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
     return out + "\"";
 }
 
+// Text in a Markdown table cell: no pipes, no line breaks, and no raw HTML (Markdown passes
+// tags through to the page): < > & are written as character references.
 std::string md_cell(const std::string& text) {
     std::string out;
     for (char c : text) {
         if (c == '|') out += "\\|";
         else if (c == '\n' || c == '\r') out += ' ';
+        else if (c == '<') out += "&lt;";
+        else if (c == '>') out += "&gt;";
+        else if (c == '&') out += "&amp;";
         else out += c;
     }
     return out;

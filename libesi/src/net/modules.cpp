@@ -104,6 +104,13 @@ void configure_modules(SlaveContext& c) {
                         fmt::format("{} has {} slot positions; there is no slot {}", c.device.type.text, positions.size(), at));
                 continue;
             }
+            if (given[at]) {
+                // Two entries for one slot: taking either would drop the other without a word.
+                c.error(m.pos, "net-module",
+                        fmt::format("{} is given twice; each slot holds one module (or null for empty)",
+                                    slot_label(positions[at], static_cast<std::uint32_t>(at))));
+                continue;
+            }
             given[at] = true;
             if (m.empty) continue;
             const Slot& slot = *positions[at].slot;

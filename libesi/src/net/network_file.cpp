@@ -44,6 +44,12 @@ public:
         }
         const auto items = reader_.sequence(*slaves_node, "slaves");
         if (!items) return;
+        if (items->size() > max_network_slaves) {
+            reader_.error(*slaves_node, "net-too-many-slaves",
+                          std::to_string(items->size()) + " slaves; an EtherCAT segment addresses at most " +
+                              std::to_string(max_network_slaves) + " (station addresses 1001 to 65535)");
+            return;
+        }
         std::set<std::string> names;
         for (const Node& item : *items) {
             SlaveSpec s;
@@ -96,7 +102,8 @@ private:
         PdoEntrySpec e;
         e.pos = node.pos();
         std::uint64_t values[3] = {};
-        const std::uint64_t maxima[3] = {0xFFFF, 0xFF, 0xFFFF};
+        // The mapping value (CiA 301) holds the bit length in 8 bits.
+        const std::uint64_t maxima[3] = {0xFFFF, 0xFF, 0xFF};
         bool ok = parts.size() == 3;
         for (std::size_t i = 0; ok && i < 3; ++i) {
             const ParsedNumber n = parse_number(parts[i]);
@@ -106,7 +113,7 @@ private:
         }
         if (!ok || values[2] == 0) {
             reader_.error(node, "yaml-type",
-                          "a PDO entry is INDEX:SUBINDEX:BITLEN (e.g. 0x607A:0x00:32; index 0 is padding), not '" + *text + "'");
+                          "a PDO entry is INDEX:SUBINDEX:BITLEN (e.g. 0x607A:0x00:32; index 0 is padding; at most 255 bits), not '" + *text + "'");
             return std::nullopt;
         }
         e.index = static_cast<std::uint32_t>(values[0]);
@@ -193,13 +200,18 @@ private:
         if (const Node* n = f->find("value")) out.value = reader_.scalar_value(*n, "value");
         if (const Node* n = f->find("type")) out.type = reader_.text(*n, "type");
         if (const Node* n = f->find("data")) {
-            if (auto hex = reader_.hex(*n, "data")) out.data = hex->bytes();
+            if (auto hex = reader_.hex(*n, "data")) {
+                out.data = hex->bytes();
+                if (out.data && out.data->empty())
+                    reader_.error(*n, "net-sdo-value", "'data' holds no bytes; an SDO download writes at least one");
+            }
         }
         if (f->has("value") == f->has("data"))
             reader_.error(node, "net-sdo-value", "an SDO needs either 'value' (typed) or 'data' (raw hex bytes)");
         if (const Node* n = f->find("transition")) {
             out.transition_pos = n->pos();
-            for (const std::string& t : strings(*n, "transition")) {
+            const std::vector<std::string> given = strings(*n, "transition");
+            for (const std::string& t : given) {
                 if (std::find(std::begin(valid_transitions), std::end(valid_transitions), t) == std::end(valid_transitions)) {
                     reader_.error(*n, "net-transition", "'" + t + "' is not a state transition (IP, PS, SO, SP, OS, OP, SI, OI, PI …)" +
                                                             yaml::did_you_mean(t, valid_transitions));
@@ -207,6 +219,8 @@ private:
                 }
                 out.transitions.push_back(t);
             }
+            if (given.empty())
+                reader_.error(*n, "net-transition", "'transition' lists no state transition; the SDO would never be sent (default: PS)");
         } else {
             out.transitions = {"PS"};
         }
@@ -234,6 +248,10 @@ private:
         if (const Node* n = f->find("revision")) s.revision = reader_.integer<std::uint32_t>(*n, "revision");
         if (!f->has("device") && !f->has("product_code"))
             reader_.error(node, "yaml-missing-key", "a slave needs 'device' (its Type text) or 'product_code'");
+        if (const Node* n = f->find("esi_file")) {
+            s.esi_file = reader_.text(*n, "esi_file");
+            s.esi_file_pos = n->pos();
+        }
         if (const Node* n = f->find("alias")) s.alias = reader_.integer<std::uint16_t>(*n, "alias");
         if (const Node* n = f->find("pdos")) {
             s.pdos_pos = n->pos();

@@ -139,10 +139,18 @@ Resolution resolve_device(const LibraryIndex& index, const DeviceQuery& q, const
         result.diagnostics.add(std::move(d));
         return result;
     }
-    // One product: the highest revision (the first file listing it when several do).
+    // One product: the highest revision; when several files list it, the first in the order the
+    // roots (`esi:`, then --esi) were given, then by path.
+    const auto earlier = [&](const IndexedDevice* a, const IndexedDevice* b) {
+        const std::size_t ra = index.file_of(*a).root, rb = index.file_of(*b).root;
+        return ra != rb ? ra < rb : a->file != b->file ? a->file < b->file : a->ordinal < b->ordinal;
+    };
+    std::stable_sort(found.begin(), found.end(), earlier);
     const IndexedDevice* best = found.front();
     for (const IndexedDevice* d : found)
         if (d->revision_no.value_or(0) > best->revision_no.value_or(0)) best = d;
+    for (const IndexedDevice* d : found)
+        if (d != best && d->revision_no == best->revision_no && d->vendor_id == best->vendor_id) result.duplicates.push_back(d);
     std::set<std::uint32_t> revisions;
     for (const IndexedDevice* d : found) revisions.insert(d->revision_no.value_or(0));
     if (!q.revision_no && revisions.size() > 1) {

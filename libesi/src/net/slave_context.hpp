@@ -73,6 +73,15 @@ void check_ros2_interfaces(SlaveContext& context);
 // E-Bus terminals after Ethernet-only devices and the converse (topology.cpp).
 void check_topology(const Network& network, const NetworkSpec& spec, Diagnostics& diagnostics);
 
+// representable.cpp: refuse the slave when the reader could not read a value of its device
+// (`devices`: the file's devices, to tell whose an error is) or when a value does not fit the
+// outputs' fields.
+void check_reader_errors(SlaveContext& context, const std::vector<const Device*>& devices, const Diagnostics& reader);
+void check_representable(SlaveContext& context);
+
+// slave_fingerprint.cpp: what a master configures for the slave, names and comments left out.
+[[nodiscard]] std::string configuration_fingerprint(const NetworkSlave& slave);
+
 // The process image: slave offsets, frames, FMMU logical addresses, variables.
 void layout_process_image(Network& network, Diagnostics& diagnostics, const std::string& path);
 

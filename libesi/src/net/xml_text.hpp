@@ -41,8 +41,11 @@ public:
         start_tag(name, attributes);
         out_ += "/>\n";
     }
-    // <name><![CDATA[text]]></name>; a "]]>" in the text is split across two sections.
-    void cdata_leaf(std::string_view name, std::string_view text) {
+    // <name><![CDATA[text]]></name>; a "]]>" in the text is split across two sections, and
+    // characters XML cannot carry become U+FFFD (CDATA takes no escapes).
+    void cdata_leaf(std::string_view name, std::string_view raw) {
+        const std::string chars = xml_chars_only(raw);
+        std::string_view text = chars;
         start_tag(name, {});
         out_ += "><![CDATA[";
         for (std::size_t at; (at = text.find("]]>")) != std::string_view::npos; text.remove_prefix(at + 2)) {
@@ -54,9 +57,10 @@ public:
         out_ += name;
         out_ += ">\n";
     }
-    // <!--text-->; "--" may not appear in a comment, so it is written "- -".
+    // <!--text-->; "--" may not appear in a comment, so it is written "- -"; characters XML
+    // cannot carry become U+FFFD.
     void comment(std::string_view text) {
-        std::string t(text);
+        std::string t = xml_chars_only(text);
         for (std::size_t at; (at = t.find("--")) != std::string::npos;) t.replace(at, 2, "- -");
         if (!t.empty() && t.back() == '-') t += ' ';
         indent(stack_.size());

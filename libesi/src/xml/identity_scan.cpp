@@ -62,6 +62,13 @@ std::optional<std::uint32_t> number_value(std::string_view text) {
     return static_cast<std::uint32_t>(*v);
 }
 
+// An attribute value as the full reader sees it: "&#35;x1003" is "#x1003".
+std::string decoded(std::string_view raw) {
+    std::string out;
+    append_decoded(out, raw);
+    return out;
+}
+
 bool is_name_end(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '/' || c == '>'; }
 
 struct Attribute {
@@ -227,8 +234,8 @@ private:
             // content (ETG.2000 DeviceType); once something else starts, the rest is skipped.
             if (tag->name == "Type") {
                 have_type_ = true;
-                device_->product_code = number_value(attribute(*tag, "ProductCode"));
-                device_->revision_no = number_value(attribute(*tag, "RevisionNo"));
+                device_->product_code = number_value(decoded(attribute(*tag, "ProductCode")));
+                device_->revision_no = number_value(decoded(attribute(*tag, "RevisionNo")));
                 if (!tag->self_closing) device_->type = leaf_text(tag->end);
             } else if (tag->name == "Name") {
                 const std::string_view lcid = attribute(*tag, "LcId");

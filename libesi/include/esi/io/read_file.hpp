@@ -19,6 +19,13 @@ inline constexpr std::uint64_t max_input_bytes = 256u << 20;
 [[nodiscard]] std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error,
                                                          std::uint64_t max_bytes = max_input_bytes);
 
+// The same for a file that must be a regular file (a cache, a library file found in a folder):
+// opened without blocking (a FIFO in its place would block open() until a writer comes) and
+// checked with fstat on the open descriptor, so that a FIFO, device or directory is refused
+// with a message instead of hanging or reading without end.
+[[nodiscard]] std::optional<std::string> read_regular_file_bytes(const std::filesystem::path& path, std::string& error,
+                                                                 std::uint64_t max_bytes = max_input_bytes);
+
 // Reads standard input to its end, bounded like a file: a stream that never ends (a device, a
 // runaway pipe) gives nullopt and a message rather than an exhausted machine.
 [[nodiscard]] std::optional<std::string> read_stdin_bytes(std::string& error, std::uint64_t max_bytes = max_input_bytes);

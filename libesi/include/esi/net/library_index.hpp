@@ -4,9 +4,11 @@
 // ESI libraries are hundreds of MB, and a network names a few dozen devices. The index lists
 // every device of the library from a light scan of each file (esi/xml/identity_scan.hpp); only
 // the files that hold the devices a network uses are then read into the model. The index is
-// cached (one file under the cache directory, written atomically) and a file is scanned again
-// only when its path, size or modification time changed. A cache that cannot be read or
-// parsed is ignored and rebuilt.
+// cached (one file under the cache directory, written atomically, with a checksum) and a file
+// is scanned again when its path, size, modification time, change time or inode changed. The
+// cache never changes a result: a cache that cannot be read, parsed or checked is ignored and
+// rebuilt, and what a build or find takes from it is checked against the file itself
+// (index_agrees_with_files); on any doubt the index is built again without the cache.
 
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +25,9 @@ struct IndexedFile {
     std::string path;  // as found under a root (absolute or as the root was given), '/'-separated
     std::uint64_t size = 0;
     std::int64_t mtime_ns = 0;
+    std::int64_t ctime_ns = 0;  // status change: `cp -p` and `touch -r` keep mtime, never ctime
+    std::uint64_t inode = 0;
+    std::size_t root = 0;  // which root (in the order given) found it; not cached
     std::string problem;  // why no device of it is listed (unreadable, not well-formed); empty if fine
 };
 
@@ -50,6 +55,9 @@ struct LibraryIndex {
 struct IndexOptions {
     // Where the cache lives; nullopt: no cache (every file is scanned).
     std::optional<std::filesystem::path> cache_dir;
+    // Scan every file and write the cache anew without reading it (after the cache was found
+    // to disagree with a file).
+    bool rescan = false;
 };
 
 struct IndexStats {
@@ -69,6 +77,10 @@ struct IndexResult {
 // Files and folders: a file is indexed as it is (ESI XML, or a YAML device source); a folder is
 // searched recursively for *.xml files. Paths are sorted so that the index is deterministic.
 [[nodiscard]] IndexResult build_library_index(const std::vector<std::filesystem::path>& roots, const IndexOptions& options);
+
+// True when each device, as the index lists it, is what its file holds now (the identity and
+// Type text at its place, scanned afresh). Cheap: only the devices' files are read.
+[[nodiscard]] bool index_agrees_with_files(const LibraryIndex& index, const std::vector<const IndexedDevice*>& devices);
 
 // $XDG_CACHE_HOME/libesi, else $HOME/.cache/libesi; nullopt when neither variable is set.
 [[nodiscard]] std::optional<std::filesystem::path> default_cache_dir();

@@ -94,6 +94,10 @@ struct SlaveSpec {
     std::optional<std::uint32_t> product_code;
     std::optional<std::uint32_t> revision;
     SourcePos device_pos;
+    // The ESI file to take the device from when several describe its identity (as written,
+    // relative to the network file's folder).
+    std::optional<std::string> esi_file;
+    SourcePos esi_file_pos;
     std::optional<std::uint16_t> alias;  // station alias (second address), 0 = none
     // The PDOs to assign; absent: the ESI's default assignment.
     std::optional<std::vector<PdoRef>> pdos;
@@ -111,6 +115,10 @@ struct SlaveSpec {
     std::vector<Ros2InterfaceSpec> ros2_interfaces;
     std::vector<ForcedEntry> force_entries;
 };
+
+// The most slaves one network holds: slave n gets station address 1001 + n, a 16-bit register
+// (ESC 0x0010), so 64,535 is what an EtherCAT segment can address this way.
+inline constexpr std::size_t max_network_slaves = 0xFFFF - 1000;
 
 struct NetworkSpec {
     std::string path;  // the file, for diagnostics

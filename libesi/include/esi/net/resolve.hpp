@@ -31,6 +31,9 @@ struct DeviceQuery {
 
 struct Resolution {
     const IndexedDevice* device = nullptr;  // null when not resolved (an error says why)
+    // The same identity (vendor, product code, revision) in other files, in the order the
+    // roots were given; `device` is the first of them in that order.
+    std::vector<const IndexedDevice*> duplicates;
     Diagnostics diagnostics;                // the error, or notes on the choice made
 };
 
