@@ -41,7 +41,7 @@ TEST(SoemLine, TheSampleLineMatchesWhatEsiNetWroteAndRunsInOp) {
     ASSERT_EQ(built.exit_code, 0) << built.err;
     const auto image = nlohmann::json::parse(read_text(dir / "net" / "process_image.json"));
     const auto& expected = image["slaves"];
-    std::vector<std::string> master_args = {"--cycles", "1000", "--state-timeout-ms", "1500"};
+    std::vector<std::string> master_args = {"--cycles", "1000", "--state-timeout-ms", "3000"};
     for (const std::string& a : ps_init_commands(dir / "net" / "network.xml")) master_args.push_back(a);
 
     const auto results = run_soem_session({{{network.string()}, master_args}});
