@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "esi/net/default_slave.hpp"
 #include "sim_esc/frame_builder.hpp"
 
 namespace esi::test {
@@ -28,12 +29,20 @@ std::vector<ModelDevice> model_devices(const std::filesystem::path& file) {
             const sii::BuildResult built = sii::build_image(info, device);
             if (!built.ok()) continue;
             m.image = built.bytes;
-            for (const Pdo& pdo : device.rx_pdos)
-                if (pdo.sm)
-                    for (const PdoEntry& e : pdo.entries) m.output_bits += e.bit_len;
-            for (const Pdo& pdo : device.tx_pdos)
-                if (pdo.sm)
-                    for (const PdoEntry& e : pdo.entries) m.input_bits += e.bit_len;
+            if (device.slots && !device.slots->slots.empty()) {
+                // A modular device: with the modules its slots hold by default, as esi-net sets it up.
+                Diagnostics ignored;
+                const net::DefaultSlave slave = net::configure_default_slave(info, device, ignored);
+                for (const net::ConfiguredPdo& pdo : slave.slave.pdos)
+                    (pdo.direction == PdoDirection::rx ? m.output_bits : m.input_bits) += pdo.bit_size();
+            } else {
+                for (const Pdo& pdo : device.rx_pdos)
+                    if (pdo.sm)
+                        for (const PdoEntry& e : pdo.entries) m.output_bits += e.bit_len;
+                for (const Pdo& pdo : device.tx_pdos)
+                    if (pdo.sm)
+                        for (const PdoEntry& e : pdo.entries) m.input_bits += e.bit_len;
+            }
             out.push_back(std::move(m));
         }
     }

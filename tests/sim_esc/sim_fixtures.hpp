@@ -21,7 +21,8 @@ struct ModelDevice {
     const Device* device = nullptr;
     std::uint32_t vendor_id = 0, product_code = 0, revision = 0;
 
-    std::uint32_t output_bits = 0, input_bits = 0;  // the default PDOs (those with an SM)
+    // The default PDOs (those with an SM; a modular device's with its default modules).
+    std::uint32_t output_bits = 0, input_bits = 0;
     std::vector<std::uint8_t> image;                // built by the sii layer
     [[nodiscard]] std::string selector() const;     // PRODUCTCODE:REVISION for --device
 };

@@ -20,31 +20,6 @@ namespace {
                        device.type.product_code.value_or(0), device.type.revision_no.value_or(0));
 }
 
-// A modular device as a one-slave network, so that esi-net puts its default modules in its
-// slots; nullopt when the device has no slots or the network cannot be built.
-[[nodiscard]] std::optional<Device> with_default_modules(const std::filesystem::path& source, const EtherCATInfo& info,
-                                                         const Device& device, Diagnostics& diagnostics) {
-    if (!device.slots || device.slots->slots.empty()) return std::nullopt;
-    net::NetworkSpec spec;
-    spec.path = source.string();
-    spec.esi = {source.filename().string()};
-    net::SlaveSpec slave;
-    slave.name = device.type.text;
-    slave.product_code = device.type.product_code;
-    slave.revision = device.type.revision_no;
-    if (info.vendor) slave.vendor_id = info.vendor->id;
-    spec.slaves.push_back(slave);
-    net::BuildResult built = net::build_network(spec, net::BuildOptions{});
-    if (!built.network || built.network->slaves.size() != 1) {
-        diagnostics.emplace(Severity::warning, "sim-modules",
-                            "the default modules could not be placed in the slots (as esi-net would); the device runs "
-                            "without modules",
-                            source.string(), device.pos);
-        return std::nullopt;
-    }
-    return device_with_modules(built.network->slaves.front());
-}
-
 [[nodiscard]] const EtherCATInfo* info_of(const EsiDocument& document, const Device& device) {
     for (const EtherCATInfo& info : document.infos)
         for (const Device& candidate : info.devices)
@@ -127,8 +102,6 @@ LineResult line_from_source(const std::filesystem::path& source, const SourceOpt
         }
         slave_options.eeprom = std::vector<std::uint8_t>(bytes->begin(), bytes->end());
     }
-    const std::optional<Device> slotted = with_default_modules(source, *info, device, result.diagnostics);
-    if (slotted) slave_options.firmware = &*slotted;
     std::optional<VirtualSlave> slave = build_slave(*info, device, slave_options, stacks, path, result.diagnostics);
     if (!slave || result.diagnostics.has_errors()) return result;
     Line line;

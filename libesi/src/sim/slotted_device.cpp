@@ -74,6 +74,8 @@ Device device_with_modules(const net::NetworkSlave& slave) {
     }
     std::sort(dictionary.objects.begin(), dictionary.objects.end(),
               [](const Object& a, const Object& b) { return a.index < b.index; });
+    // The modules are in: the firmware must not add its slots' default modules on top.
+    device.slots.reset();
     return device;
 }
 

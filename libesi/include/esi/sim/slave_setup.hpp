@@ -51,7 +51,7 @@ struct LineResult {
 
 // SOURCE [--device] [--eeprom]: a line of one slave. A file that describes several devices
 // needs --device; a selector that matches none, or several, is an error. A modular device runs
-// with its default modules in their slots, as esi-net chooses them.
+// with its default modules in their slots (the model slave places them as esi-net would).
 [[nodiscard]] LineResult line_from_source(const std::filesystem::path& source, const SourceOptions& options,
                                           const StackFactory& stacks);
 
