@@ -3,43 +3,14 @@
 
 #include "esi/net/default_slave.hpp"
 
-#include <algorithm>
-
 #include "slave_context.hpp"
 
 namespace esi::net {
 
-namespace {
-
-// Every slot position filled with its default module (Slot@Default, else a ModuleIdent marked
-// @Default), as a slave spec's `modules:` would name them.
-std::optional<std::vector<ModuleSpec>> default_modules(const Device& device) {
-    if (!device.slots) return std::nullopt;
-    std::vector<ModuleSpec> out;
-    std::uint32_t position = 0;
-    for (const Slot& slot : device.slots->slots) {
-        std::optional<std::uint32_t> ident = slot.default_ident;
-        for (const SlotModuleIdent& id : slot.module_idents)
-            if (!ident && id.default_ident.value_or(0) != 0) ident = id.value;
-        const std::uint32_t count = std::max<std::uint32_t>(1, slot.max_instances);
-        for (std::uint32_t i = 0; i < count && position < 4096; ++i, ++position) {
-            if (!ident) continue;
-            ModuleSpec m;
-            m.ident = ident;
-            m.slot = position;
-            out.push_back(m);
-        }
-    }
-    return out;
-}
-
-}  // namespace
-
 DefaultSlave configure_default_slave(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics) {
     DefaultSlave out;
     const NetworkSpec network;
-    SlaveSpec spec;
-    spec.modules = default_modules(device);
+    const SlaveSpec spec;
     NetworkSlave& slave = out.slave;
     slave.device = &device;
     slave.info = &info;

@@ -166,7 +166,7 @@ void add_objects_from_pdo_entries(const Device& device, CoeDictionary& dictionar
     }
 }
 
-// A modular device runs with the modules its slots hold by default: their PDOs join the device's
+// A modular device runs with the modules esi-net places in its slots by default: their PDOs join the device's
 // (indices moved by the slot increments, assigned to the SMs esi-net assigns them to), so the
 // mapping objects derived below include them; the assignment objects get esi-net's default
 // assignment (set_default_assignment).
@@ -178,11 +178,19 @@ struct DefaultModules {
 DefaultModules add_default_modules(const EtherCATInfo& info, const Device& original, Device& device) {
     DefaultModules out;
     if (!original.slots || original.slots->slots.empty()) return out;
+    // A device that is not one of the catalogue's comes configured (esi-sim's line builds it with
+    // the modules NETWORK.yaml or esi-net placed); its PDOs and objects are taken as they are.
+    const bool from_catalogue = std::any_of(info.devices.begin(), info.devices.end(), [&](const Device& d) { return &d == &original; });
+    if (!from_catalogue) return out;
     Diagnostics ignored;  // what esi-net would report is lint's and esi-net's business
     net::DefaultSlave configured = net::configure_default_slave(info, original, ignored);
     if (configured.slave.modules.empty()) return out;
     for (const net::ConfiguredPdo& c : configured.slave.pdos) {
-        if (!c.module) continue;
+        // A device handed over with its modules already in place (esi-sim's line does that for
+        // the modules esi-net places) has these PDOs.
+        const std::vector<Pdo>& list = c.direction == PdoDirection::rx ? device.rx_pdos : device.tx_pdos;
+        const bool present = std::any_of(list.begin(), list.end(), [&](const Pdo& p) { return p.index == c.index; });
+        if (!c.module || present) continue;
         Pdo pdo;
         pdo.direction = c.direction;
         pdo.index = c.index;
@@ -203,7 +211,9 @@ DefaultModules add_default_modules(const EtherCATInfo& info, const Device& origi
     for (const net::SmSetup& sm : configured.slave.sms) {
         if (!sm.is_process_data()) continue;
         std::vector<std::uint32_t> indices;
-        for (std::size_t p : sm.pdos) indices.push_back(configured.slave.pdos[p].index);
+        for (std::size_t p : sm.pdos)
+            if (std::find(indices.begin(), indices.end(), configured.slave.pdos[p].index) == indices.end())
+                indices.push_back(configured.slave.pdos[p].index);
         out.assignment.emplace_back(sm.number, std::move(indices));
     }
     out.objects = std::move(configured.module_objects);

@@ -1,6 +1,7 @@
 #pragma once
 // One device configured as esi-net configures a slave that NETWORK.yaml names without options:
-// the modules its slots hold by default (ETG.2001), the default PDO assignment with the slot
+// the modules esi-net places in its slots by default (ETG.2001: the Default module of every
+// slot that needs one, MinInstances), the default PDO assignment with the slot
 // increments applied to PDO and entry indices, and the objects the modules bring, at their
 // indices in the slot. For users that run one device from its model (esi-sim's model slave).
 
