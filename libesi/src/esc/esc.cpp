@@ -305,9 +305,9 @@ bool Esc::access(Side side, bool is_write, std::uint16_t address, std::span<std:
 void Esc::read(std::uint16_t address, std::span<std::uint8_t> out) { access(Side::pdi, false, address, out); }
 
 void Esc::write(std::uint16_t address, std::span<const std::uint8_t> in) {
-    // access() takes a mutable span for both directions; a write never changes the buffer.
-    std::vector<std::uint8_t> copy(in.begin(), in.end());
-    access(Side::pdi, true, address, copy);
+    // access() takes a mutable span for both directions; with is_write it only reads the buffer,
+    // so the firmware's data is passed as it is (no copy per access).
+    access(Side::pdi, true, address, std::span<std::uint8_t>(const_cast<std::uint8_t*>(in.data()), in.size()));
 }
 
 }  // namespace esi::esc
