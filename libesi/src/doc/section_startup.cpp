@@ -16,12 +16,14 @@ namespace esi::doc {
 namespace {
 
 // Cycle/shift time with its factor spelled out: the time is `value` ns plus `factor` times the
-// reference (ETG.2000 DcOpModeType: the bus cycle for Sync0, the SYNC0 cycle for Sync1's cycle),
-// so "1 × the cycle", not "0 ns × 1".
+// reference (ETG.2000 DcOpModeType: the bus cycle for Sync0, the SYNC0 cycle for Sync1's cycle;
+// a negative factor divides it), so "1 × the cycle", not "0 ns × 1".
 std::string dc_time_text(const std::optional<DcTime>& t, std::string_view reference) {
     if (!t) return {};
     if (!t->factor || *t->factor == 0) return std::to_string(t->value) + " ns";
-    std::string out = std::to_string(*t->factor) + " × " + std::string(reference);
+    const std::int64_t factor = *t->factor;
+    std::string out = factor > 0 ? std::to_string(factor) + " × " + std::string(reference)
+                                 : std::string(reference) + " / " + std::to_string(-factor);
     if (t->value > 0) out += " + " + std::to_string(t->value) + " ns";
     else if (t->value < 0) out += " − " + std::to_string(-t->value) + " ns";
     return out;
