@@ -274,3 +274,29 @@ TEST(ImportEscapeHatch, ControlCharactersAndInvalidUtf8BecomeReplacementCharacte
     EXPECT_EQ(elements[0].attributes.at(0).value, "a" + r + "b" + r);
     EXPECT_EQ(elements[0].text, "t" + r + "ext" + r);
 }
+
+namespace {
+
+TEST(ImportIdentity, TwoDevicesWithOneIdentityAreNamedAtImport) {
+    EsiDocument doc = load_sample("digital-io-8.yaml");
+    esi::Device copy = first_device(doc);
+    copy.type.text = "EX-DIO-8B-copy";
+    copy.pos = esi::SourcePos{40, 5};
+    copy.type.pos = esi::SourcePos{41, 7};
+    first_device(doc).type.pos = esi::SourcePos{12, 7};
+    doc.infos.at(0).devices.push_back(copy);
+    const ImportResult imported = import_device_source(doc);
+    ASSERT_TRUE(imported.yaml);
+    const esi::Diagnostic* found = nullptr;
+    for (const auto& d : imported.diagnostics)
+        if (d.rule == "import-identity") found = &d;
+    ASSERT_NE(found, nullptr) << diagnostics_text(imported.diagnostics);
+    EXPECT_EQ(found->pos.line, 41u);
+    ASSERT_EQ(found->notes.size(), 1u);
+    EXPECT_EQ(found->notes[0].pos.line, 12u);
+    // Loading the source refuses it, naming both places too.
+    const esi::DeviceSource loaded = esi::load_device_source(*imported.yaml, "imported.yaml");
+    EXPECT_FALSE(loaded.document);
+}
+
+}  // namespace
