@@ -4,13 +4,16 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <set>
 
 #include "cli_common.hpp"
 #include "diagnostic_line.hpp"
 #include "out_of_memory.hpp"
 #include "esi/device_selector.hpp"
 #include "esi/diff/diff.hpp"
+#include "esi/diff/filter.hpp"
 #include "esi/diff/report.hpp"
 #include "esi/doc/datasheet.hpp"
 #include "esi/doc/diff_html.hpp"
@@ -22,6 +25,20 @@ namespace {
 using esi::cli::exit_findings;
 using esi::cli::exit_ok;
 using esi::cli::exit_usage;
+
+// A path inside the current directory as a relative one (what the user would type); any other
+// path, and standard input, as given.
+std::string shown_path(const std::string& path) {
+    if (path.empty() || path == "<stdin>") return path;
+    std::error_code ec;
+    const std::filesystem::path cwd = std::filesystem::current_path(ec);
+    if (ec) return path;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, ec).lexically_normal();
+    if (ec) return path;
+    const std::filesystem::path relative = absolute.lexically_relative(cwd);
+    if (relative.empty() || *relative.begin() == "..") return path;
+    return relative.generic_string();
+}
 
 bool reaches(esi::Verdict verdict, const std::string& fail_on) {
     if (fail_on == "never") return false;
@@ -48,6 +65,14 @@ int run_tool(int argc, char** argv) {
         ->check(CLI::IsMember({"text", "json", "markdown", "html"}));
     app.add_option("--fail-on", fail_on, "lowest class that makes the exit code 1: breaking, any or never")
         ->check(CLI::IsMember({"breaking", "any", "never"}));
+    std::vector<std::string> ignore, only;
+    app.add_option("--ignore", ignore, "leave out changes of these classes: cosmetic, compatible, breaking (comma-separated)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"cosmetic", "compatible", "breaking"}));
+    app.add_option("--only", only, "report only changes of these classes: cosmetic, compatible, breaking (comma-separated)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"cosmetic", "compatible", "breaking"}))
+        ->excludes("--ignore");
     esi::cli::add_device_option(app, device, "compare only this device");
     esi::cli::add_version_flag(app, "esi-diff");
     if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
@@ -72,19 +97,26 @@ int run_tool(int argc, char** argv) {
             return exit_usage;
         }
     }
-    const esi::FileDiff diff = esi::diff_sources(std::move(old_source), std::move(new_source), options);
+    esi::FileDiff diff = esi::diff_sources(std::move(old_source), std::move(new_source), options);
     if (!diff.result) {
         for (const auto& d : diff.diagnostics) print_diagnostic(d, "");
         if (diff.diagnostics.empty()) std::cerr << "esi-diff: could not read the input files\n";
         return exit_usage;
     }
-    const esi::DiffResult& result = *diff.result;
+    esi::DiffResult& result = *diff.result;
+    if (!ignore.empty() || !only.empty()) {
+        std::set<esi::ChangeClass> kept;
+        if (only.empty()) kept = {esi::ChangeClass::cosmetic, esi::ChangeClass::compatible, esi::ChangeClass::breaking};
+        for (const auto& name : only) kept.insert(*esi::change_class_named(name));
+        for (const auto& name : ignore) kept.erase(*esi::change_class_named(name));
+        esi::keep_classes(result, kept);
+    }
     if (options.device && result.old_devices_compared == 0 && result.new_devices_compared == 0) {
         std::cerr << "esi-diff: --device " << device << " matches no device in either file\n";
         return exit_usage;
     }
 
-    const esi::DiffLabels labels{diff.old_path, diff.new_path};
+    const esi::DiffLabels labels{shown_path(diff.old_path), shown_path(diff.new_path)};
     std::string report;
     if (format == "html") {
         esi::doc::DiffHtmlOptions html_options;

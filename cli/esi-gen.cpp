@@ -68,7 +68,7 @@ int run_tool(int argc, char** argv) {
     CLI::App app{"esi-gen: generate ESI XML, C/C++ object dictionaries, slave tables and process-image structs from one device source"};
     std::string source, output_dir, dump_model, device, prefix, import_path, config;
     std::vector<std::string> only, template_dirs;
-    bool list_outputs = false, list_kinds = false, strict_size = false;
+    bool list_outputs = false, list_kinds = false, strict_size = false, strict = false;
     app.add_option("source", source, "YAML device source (.yaml/.yml) or ESI file (.xml)");
     app.add_option("-o,--output", output_dir, "output directory (created when missing)");
     app.add_option("--only", only, "output kinds to generate, comma-separated (default: all; see --list-kinds)")->delimiter(',');
@@ -83,6 +83,8 @@ int run_tool(int argc, char** argv) {
     app.add_flag("--list-kinds", list_kinds, "print the output kinds and exit");
     app.add_flag("--strict-size", strict_size,
                  "sii: refuse an image larger than Eeprom/ByteSize instead of leaving out optional content until it fits");
+    app.add_flag("--strict", strict,
+                 "sii: refuse an image that switches the PDI off (no esc: and no Eeprom/ConfigData) instead of warning");
     esi::cli::add_version_flag(app, "esi-gen");
     if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
 
@@ -115,6 +117,7 @@ int run_tool(int argc, char** argv) {
     options.output_dir = output_dir;
     options.only = only;
     options.sii_strict_size = strict_size;
+    options.sii_strict = strict;
     if (!esi::cli::parse_device_option("esi-gen", device, options.view.device)) return exit_usage;
     if (!prefix.empty()) options.view.symbol_prefix = prefix;
     std::vector<fs::path> user_dirs;

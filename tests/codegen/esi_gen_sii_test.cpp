@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+
 #include "codegen_test_support.hpp"
 #include "esi/sii/decode.hpp"
 #include "esi/sii/image_file.hpp"
@@ -98,6 +100,67 @@ TEST(EsiGenSii, ListOutputsNamesTheImageFiles) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("eeprom.bin\n"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("eeprom.hex\n"), std::string::npos) << r.out;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(EsiGenSii, AnImageThatSwitchesThePdiOffIsAWarningAndWithStrictAnError) {
+    // A minimal source without `esc:` and without Eeprom/ConfigData (issue 23).
+    esi::test::TempDir dir;
+    esi::test::write_text(dir / "min.yaml",
+                          "vendor: { id: 0x0E4A, name: V }\n"
+                          "devices:\n"
+                          "  - type: EX-1\n"
+                          "    name: Ex\n"
+                          "    product_code: 1\n"
+                          "    revision: 1\n"
+                          "    mailbox: { size: 128, coe: {} }\n");
+    const auto out = dir.path() / "out";
+    const auto warned = tc::esi_gen(dir / "min.yaml", out, {"--only", "sii"});
+    ASSERT_EQ(warned.exit_code, 0) << warned.err;
+    EXPECT_NE(warned.err.find("warning: no Eeprom/ConfigData: PDI control (word 0) is 0"), std::string::npos) << warned.err;
+    EXPECT_NE(warned.err.find("esc: lan9252-spi"), std::string::npos) << warned.err;
+    EXPECT_EQ(tc::tree(out).count("eeprom.bin"), 1u);
+
+    const auto strict_out = dir.path() / "strict";
+    const auto strict = tc::esi_gen(dir / "min.yaml", strict_out, {"--only", "sii", "--strict"});
+    EXPECT_EQ(strict.exit_code, 1) << strict.err;
+    EXPECT_NE(strict.err.find("error: no Eeprom/ConfigData"), std::string::npos) << strict.err;
+    EXPECT_TRUE(tc::tree(strict_out).empty());
+
+    // Named ESC: no warning, and the image enables the PDI.
+    esi::test::write_text(dir / "esc.yaml", esi::test::read_text(dir / "min.yaml") + "    esc: ax58100-spi\n");
+    const auto named_out = dir.path() / "named";
+    const auto named = tc::esi_gen(dir / "esc.yaml", named_out, {"--only", "sii", "--strict"});
+    ASSERT_EQ(named.exit_code, 0) << named.err;
+    const std::string image = tc::tree(named_out).at("eeprom.bin");
+    ASSERT_GE(image.size(), 2u);
+    EXPECT_EQ(static_cast<unsigned char>(image[0]), 0x05);  // PDI control: SPI
+    EXPECT_EQ(image.size(), 2048u);
+}
+
+TEST(EsiGenSii, APassiveTerminalGetsNoImage) {
+    esi::test::TempDir dir;
+    esi::test::write_text(dir / "passive.yaml",
+                          "vendor: { id: 2, name: Beckhoff }\n"
+                          "groups: [{ type: System, name: System }]\n"
+                          "devices:\n"
+                          "  - { type: EL9011, name: EL9011 End Terminal, physics: \"\" }\n"
+                          "  - { type: EK-1, name: Coupler, product_code: 7, revision: 1, esc: et1100-spi }\n");
+    const auto out = dir.path() / "out";
+    const auto r = tc::esi_gen(dir / "passive.yaml", out, {"--only", "sii"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto files = tc::tree(out);
+    std::size_t images = 0;
+    for (const auto& [name, content] : files) {
+        std::string lower = name;
+        for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        EXPECT_EQ(lower.find("el9011"), std::string::npos) << name;
+        images += lower.find("eeprom.bin") != std::string::npos;
+    }
+    EXPECT_EQ(images, 1u);
 }
 
 }  // namespace

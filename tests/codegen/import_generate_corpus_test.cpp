@@ -22,16 +22,11 @@ const std::map<std::string, std::string>& known_exceptions() {
     static const std::map<std::string, std::string> list = {
         // The YAML source cannot express these files (docs/yaml-import.md, "Known exceptions").
         {"Beckhoff__EL2xxx__dls-ethercat.xml", "a device lists RxPdo #x1602 twice"},
-        {"Beckhoff__EL9xxx__dls-ethercat__2018-01.xml", "devices without ProductCode and RevisionNo"},
         {"Beckhoff__EtherCAT_Terminals__dls-ethercat.xml", "an RxPdo without Index (the reader reports an error)"},
-        {"PollenRobotics__epos-3axis__poulpe.xml", "three devices share one identity"},
+        {"PollenRobotics__epos-3axis__poulpe.xml", "three devices share one identity (refused, naming both places)"},
         {"PollenRobotics__NeckOrbita3d_fw1.0__poulpe.xml", "Index '#x0x6041' is not a number"},
         {"PollenRobotics__NeckOrbita3d_fw1.5__poulpe.xml", "Index '#x0x6041' is not a number"},
         // The declared EEPROM cannot hold even the mandatory part of the image (docs/sii.md §5).
-        {"Beckhoff__BKxxxx__dls-ethercat.xml",
-         "BK1120 revisions up to #x00100000, BK1250 and IL230x-B110 declare 256 bytes; header, strings, General, FMMU "
-         "and SyncM take 260-278"},
-        {"Beckhoff__BKxxxx_MDP__dls-ethercat__2013-03.xml", "BK1120 and BK1250 declare 256 bytes; the mandatory part takes 266-284"},
         {"Beckhoff__EtherCAT_EvaBoard__dls-ethercat.xml", "16 of the 19 boards declare 128 bytes, the size of the header alone"},
     };
     return list;

@@ -104,3 +104,52 @@ TEST(EsiDiffCli, MissingOrMalformedInputExitsTwoWithPosition) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(EsiDiffCli, IgnoreAndOnlyNarrowTheReportAndTheVerdict) {
+    // old.xml -> new.xml has breaking changes and others.
+    const auto all = run({tool("esi-diff"), "--format", "json", data("old.xml"), data("new.xml")});
+    const auto all_changes = nlohmann::json::parse(all.out).at("changes");
+    std::size_t breaking = 0, cosmetic = 0;
+    for (const auto& c : all_changes) {
+        breaking += c.at("class") == "breaking";
+        cosmetic += c.at("class") == "cosmetic";
+    }
+    ASSERT_GT(breaking, 0u);
+    ASSERT_LT(breaking, all_changes.size());
+
+    const auto only = run({tool("esi-diff"), "--format", "json", "--only", "breaking", data("old.xml"), data("new.xml")});
+    EXPECT_EQ(only.exit_code, 1) << only.err;
+    const auto only_changes = nlohmann::json::parse(only.out).at("changes");
+    EXPECT_EQ(only_changes.size(), breaking);
+    for (const auto& c : only_changes) EXPECT_EQ(c.at("class"), "breaking");
+
+    const auto ignored = run({tool("esi-diff"), "--format", "json", "--ignore", "cosmetic", data("old.xml"), data("new.xml")});
+    EXPECT_EQ(nlohmann::json::parse(ignored.out).at("changes").size(), all_changes.size() - cosmetic);
+
+    // A cosmetic-only change ignored is no change: identical, and --fail-on any passes.
+    TempDir dir;
+    std::string text = esi::test::read_text(data("old.xml"));
+    const auto at = text.find("Beispielgerät");
+    text.replace(at, std::string("Beispielgerät").size(), "Beispiel");
+    write_text(dir / "cosmetic.xml", text);
+    const auto hidden = run({tool("esi-diff"), "--fail-on", "any", "--ignore", "cosmetic", data("old.xml"), (dir / "cosmetic.xml").string()});
+    EXPECT_EQ(hidden.exit_code, 0) << hidden.out;
+    EXPECT_NE(hidden.out.find("identical"), std::string::npos) << hidden.out;
+
+    // The two exclude each other; an unknown class is a usage error.
+    EXPECT_EQ(run({tool("esi-diff"), "--only", "breaking", "--ignore", "cosmetic", data("old.xml"), data("new.xml")}).exit_code, 2);
+    EXPECT_EQ(run({tool("esi-diff"), "--ignore", "pretty", data("old.xml"), data("new.xml")}).exit_code, 2);
+}
+
+TEST(EsiDiffCli, PathsInsideTheCurrentDirectoryArePrintedRelative) {
+    const std::string data_dir = (esi::test::source_dir() / "tests" / "diff" / "data").string();
+    const auto r = run({"/bin/sh", "-c", "cd '" + data_dir + "' && '" + tool("esi-diff").string() + "' '" + data("old.xml") + "' '" +
+                                             data("new.xml") + "'"});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.out.find("old.xml"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find(data_dir), std::string::npos) << r.out;
+}
+
+}  // namespace

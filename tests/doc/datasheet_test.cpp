@@ -274,3 +274,22 @@ TEST(Datasheet, DictionaryAndModuleFilesGetAPageOfTheirOwn) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Datasheet, ReadsLikeADatasheetCountsEnumerationsAndDcFactors) {
+    const auto pages = render(load(sample_esi()));
+    const std::string& page = device_page(pages);
+    // Counts in words, singular where it is one.
+    EXPECT_EQ(page.find("1 bytes"), std::string::npos);
+    EXPECT_EQ(page.find("1 commands"), std::string::npos);
+    // CycleTimeSync0 Factor="1" with 0 ns: the factor spelled out.
+    EXPECT_NE(page.find("<td>1 × the cycle</td>"), std::string::npos);
+    EXPECT_EQ(page.find("0 ns × 1"), std::string::npos);
+    EXPECT_NE(pages.at("out/index.html").find("1 device page from"), std::string::npos) << pages.at("out/index.html");
+    // The index is titled by vendor and catalogue, not by the file.
+    EXPECT_NE(pages.at("out/index.html").find("<title>&#x2068;Example Automation GmbH: Digital I/O&#x2069;</title>"), std::string::npos)
+        << pages.at("out/index.html");
+}
+
+}  // namespace

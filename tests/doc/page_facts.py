@@ -11,6 +11,8 @@ For each page, at a 1280 px wide viewport:
   - every svg.bit-layout: its box, its entries (g.entry) and how many lack a label
     (aria-label and <title>);
   - every PDO table row (tr[data-entry]) by key, and per PDO section its rows and picture entries;
+  - the numbers: cells marked hex that hold no hex number, enumeration texts shown, DC times
+    whose factor is spelled out (and any left as "0 ns × 1"), the title and first heading;
   - console messages and uncaught exceptions, and every request other than the page itself
     (requests are intercepted and failed, so nothing leaves the machine);
   - a screenshot from the first picture with entries (else the top of the page): its size, how
@@ -67,7 +69,19 @@ FACTS_SCRIPT = r"""
     id: s.id, rows: s.querySelectorAll('tr[data-entry]').length,
     entries: [...s.querySelectorAll('svg.bit-layout g.entry')].length}));
   const firstSvg = [...document.querySelectorAll('svg.bit-layout')].find(s => s.querySelector('g.entry'));
-  return JSON.stringify({title: document.title, lang: root.lang, scroll_width: root.scrollWidth, client_width: viewport,
+  // Numbers as an EtherCAT engineer reads them: every cell the page marks as hex (indices,
+  // identities, PDO indices, masks) holds a hex number; enumerations show their texts; DC times
+  // spell their factors out.
+  const hexCells = [...document.querySelectorAll('td.hex')].map(td => td.textContent.trim()).filter(t => t !== '');
+  const notHex = hexCells.filter(t => !/^0x[0-9A-F]+(:[0-9A-F]+)?$/.test(t)).slice(0, 5);
+  const dcCells = [...document.querySelectorAll('section#dc td')].map(td => td.textContent.trim());
+  const h1 = document.querySelector('h1');
+  return JSON.stringify({title: document.title, h1: h1 ? h1.textContent.trim() : '',
+                         hex_cells: hexCells.length, not_hex: notHex,
+                         enum_texts: document.querySelectorAll('small.enum').length,
+                         dc_factor_cells: dcCells.filter(t => t.includes(' × ')).length,
+                         dc_bare_factors: dcCells.filter(t => / ns × /.test(t)).slice(0, 5),
+                         lang: root.lang, scroll_width: root.scrollWidth, client_width: viewport,
                          wide_elements: wide, svgs, entry_keys: keys, pdo_sections: pdos,
                          first_svg_top: firstSvg ? firstSvg.getBoundingClientRect().top + window.scrollY : null,
                          scripts: document.scripts.length});

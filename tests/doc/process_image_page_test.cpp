@@ -106,7 +106,9 @@ TEST(ProcessImagePage, PicturesHaveASizeAndATitleAndThePageIsSelfContained) {
     EXPECT_EQ(count(html, "href=\"http"), 0u);
     EXPECT_EQ(count(html, "<link"), 0u);
     EXPECT_NE(html.find("<style>"), std::string::npos);
-    EXPECT_NE(html.find("<title>Process image of line</title>"), std::string::npos);
+    // Named by the master, as the integrator calls it; the network file second.
+    EXPECT_NE(html.find("<title>Process image of Line 1 (line)</title>"), std::string::npos);
+    EXPECT_NE(html.find("<h1>Process image of Line 1</h1>"), std::string::npos);
 }
 
 TEST(ProcessImagePage, IsByteIdenticalRunToRun) {

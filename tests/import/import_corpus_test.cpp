@@ -26,8 +26,6 @@ const std::map<std::string, std::string>& known_exceptions() {
     static const std::map<std::string, std::string> list = {
         {"Beckhoff__EL2xxx__dls-ethercat.xml",
          "a device lists RxPdo #x1602 twice; in the YAML source a PDO index is one PDO (yaml-duplicate)"},
-        {"Beckhoff__EL9xxx__dls-ethercat__2018-01.xml",
-         "the devices have no ProductCode and RevisionNo (Type text only); the YAML source identifies a device by both"},
         {"Beckhoff__EtherCAT_Terminals__dls-ethercat.xml",
          "a device uses one index for an RxPdo and a TxPdo; in the YAML source an index is one PDO (yaml-duplicate)"},
         {"PollenRobotics__epos-3axis__poulpe.xml",

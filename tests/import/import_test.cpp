@@ -120,6 +120,34 @@ TEST(ImportDerivation, WhatTheFileHasDifferentlyStaysExplicit) {
     EXPECT_EQ(round_trip_changes(doc), "");
 }
 
+TEST(ImportEscPreset, ConfigDataOfAPresetBecomesEscAndAnyOtherStaysExplicit) {
+    // modular-coupler names `esc: xmc4`: its ESI holds exactly the preset's ConfigData and size.
+    EsiDocument doc = load_sample("modular-coupler.yaml");
+    ImportResult imported = import_device_source(doc);
+    ASSERT_TRUE(imported.yaml) << diagnostics_text(imported.diagnostics);
+    EXPECT_NE(imported.yaml->find("    esc: xmc4\n"), std::string::npos) << *imported.yaml;
+    EXPECT_EQ(imported.yaml->find("config_data:"), std::string::npos) << *imported.yaml;
+    EXPECT_EQ(imported.yaml->find("eeprom:"), std::string::npos) << *imported.yaml;
+    EXPECT_EQ(round_trip_changes(doc), "");
+
+    // Another size: not the preset, so the three values stay as the file has them.
+    first_device(doc).eeprom->byte_size = 4096;
+    imported = import_device_source(doc);
+    ASSERT_TRUE(imported.yaml);
+    EXPECT_EQ(imported.yaml->find("esc:"), std::string::npos) << *imported.yaml;
+    EXPECT_NE(imported.yaml->find("config_data: \"8006810600000000\""), std::string::npos) << *imported.yaml;
+    EXPECT_EQ(round_trip_changes(doc), "");
+
+    // A preset with a BootStrap matches only with that BootStrap; lower-case hex matches too.
+    first_device(doc).eeprom->byte_size = 2048;
+    first_device(doc).eeprom->config_data->text = "8006e08800000000";
+    first_device(doc).eeprom->boot_strap = esi::HexData{"0010000200120002", {}};
+    imported = import_device_source(doc);
+    ASSERT_TRUE(imported.yaml);
+    EXPECT_NE(imported.yaml->find("    esc: tiesc\n"), std::string::npos) << *imported.yaml;
+    EXPECT_EQ(round_trip_changes(doc), "");
+}
+
 TEST(ImportDerivation, WithoutOmissionEverythingIsExplicit) {
     const EsiDocument doc = load_sample("servo-item-c-series.yaml");
     ImportOptions options;
@@ -246,3 +274,29 @@ TEST(ImportEscapeHatch, ControlCharactersAndInvalidUtf8BecomeReplacementCharacte
     EXPECT_EQ(elements[0].attributes.at(0).value, "a" + r + "b" + r);
     EXPECT_EQ(elements[0].text, "t" + r + "ext" + r);
 }
+
+namespace {
+
+TEST(ImportIdentity, TwoDevicesWithOneIdentityAreNamedAtImport) {
+    EsiDocument doc = load_sample("digital-io-8.yaml");
+    esi::Device copy = first_device(doc);
+    copy.type.text = "EX-DIO-8B-copy";
+    copy.pos = esi::SourcePos{40, 5};
+    copy.type.pos = esi::SourcePos{41, 7};
+    first_device(doc).type.pos = esi::SourcePos{12, 7};
+    doc.infos.at(0).devices.push_back(copy);
+    const ImportResult imported = import_device_source(doc);
+    ASSERT_TRUE(imported.yaml);
+    const esi::Diagnostic* found = nullptr;
+    for (const auto& d : imported.diagnostics)
+        if (d.rule == "import-identity") found = &d;
+    ASSERT_NE(found, nullptr) << diagnostics_text(imported.diagnostics);
+    EXPECT_EQ(found->pos.line, 41u);
+    ASSERT_EQ(found->notes.size(), 1u);
+    EXPECT_EQ(found->notes[0].pos.line, 12u);
+    // Loading the source refuses it, naming both places too.
+    const esi::DeviceSource loaded = esi::load_device_source(*imported.yaml, "imported.yaml");
+    EXPECT_FALSE(loaded.document);
+}
+
+}  // namespace

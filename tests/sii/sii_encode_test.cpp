@@ -192,6 +192,7 @@ TEST(SiiEncode, EveryEncoderRoundTripsThroughTheDecoder) {
                         {category::tx_pdo, Pdos{{pdo}}, 0, 0},
                         {category::dc, DcOpModes{{dc}}, 0, 0},
                         {0x0800, RawData{{9, 8}}, 0, 0}};
+    image.header.config_data[0] = 0x05;  // SPI: a mailbox behind a PDI that is off is a fault (sii-pdi-off)
     const DecodedImage d = decode_image(encode_image(image, 256));
     EXPECT_TRUE(d.faults.empty()) << d.faults.front().message;
     ASSERT_EQ(d.image.categories.size(), image.categories.size());

@@ -184,6 +184,45 @@ constexpr Rule eeprom_config_data{
     .check = check_config_data,
 };
 
+// ---- eeprom-pdi-off --------------------------------------------------------------------------
+
+void check_pdi_off(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        if (!device->eeprom || !device->eeprom->config_data) continue;
+        const auto bytes = device->eeprom->config_data->bytes();
+        if (!bytes || bytes->empty() || (*bytes)[0] != 0) continue;
+        // Device emulation (0x0141 bit 0): the ESC answers the state machine itself, as couplers
+        // without a microcontroller do (EK1100: ConfigData 0001); no PDI is needed then.
+        if (bytes->size() > 1 && ((*bytes)[1] & 0x01) != 0) continue;
+        const bool mailbox = device->mailbox.has_value();
+        const bool process_data = !device->rx_pdos.empty() || !device->tx_pdos.empty();
+        if (!mailbox && !process_data) continue;
+        context.report(device->eeprom->config_data->pos,
+                       device_label(*device) + ": Eeprom ConfigData sets PDI control (SII word 0, register 0x0140) to 0, " +
+                           "which switches the process data interface off, and the ESC does not emulate the device " +
+                           "(0x0141 bit 0 clear); the device has " +
+                           (mailbox && process_data ? "a mailbox and process data" : mailbox ? "a mailbox" : "process data") +
+                           ", which only a microcontroller behind the PDI can serve. Set the PDI the board uses " +
+                           "(0x05 SPI, 0x08/0x09 µC, 0x80 on-chip bus …; YAML sources: `esc:`)");
+    }
+}
+
+constexpr Rule eeprom_pdi_off{
+    .id = "eeprom-pdi-off",
+    .default_severity = Severity::error,
+    .summary = "Eeprom ConfigData that switches the PDI off on a device with a mailbox or process data",
+    .rationale =
+        "The ESC loads SII word 0 into PDI control (0x0140) and ESC configuration (0x0141) at power-on (Beckhoff ESC "
+        "datasheet section II 'PDI Control'; ETG.1000.6 Table 16). PDI control 0 leaves the microcontroller without "
+        "any access to the ESC: the mailbox is never answered and the state machine stays in INIT unless the ESC "
+        "emulates the device (0x0141 bit 0, devices without a microcontroller). Such an image looks consistent to "
+        "every offline check and fails only on the bench. Published vendor catalogues (Beckhoff, Microchip, ASIX, the "
+        "SOES samples) do not have it, so it is an error.",
+    .bad_example = "<Eeprom><ByteSize>2048</ByteSize><ConfigData>0000000000000000</ConfigData></Eeprom>",
+    .good_example = "<Eeprom><ByteSize>2048</ByteSize><ConfigData>050E034464000000</ConfigData></Eeprom>",
+    .check = check_pdi_off,
+};
+
 // ---- eeprom-boot-strap ----------------------------------------------------------------------
 
 void check_boot_strap(const EsiDocument& document, RuleContext& context) {
@@ -289,6 +328,7 @@ void add_eeprom(std::vector<Rule>& out) {
         eeprom_byte_size_unusual,
         eeprom_hex,
         eeprom_config_data,
+        eeprom_pdi_off,
         eeprom_boot_strap,
         eeprom_boot_mailbox_overlap,
         eeprom_category,

@@ -7,6 +7,7 @@
 #include "esi/codegen/mustache.hpp"
 #include "esi/codegen/template_lookup.hpp"
 #include "esi/io/same_file.hpp"
+#include "esi/model/passive_terminal.hpp"
 #include "esi/text_distance.hpp"
 
 namespace esi::codegen {
@@ -88,6 +89,8 @@ Plan make_plan(const EsiDocument& document, const GenerateOptions& options, Diag
         const fs::path dir = subdirectories ? options.output_dir / device.c_name : options.output_dir;
         for (const auto* kind : plan.kinds) {
             if (kind->scope != OutputScope::device) continue;
+            // A passive terminal has no ESC and so no EEPROM to program.
+            if (kind->name == "sii" && device.device && is_passive_terminal(*device.device)) continue;
             for (const auto& artifact : kind->artifacts)
                 plan.add({dir / expand(artifact.file_name, stem), kind->name, artifact.template_name}, &device, &artifact);
         }

@@ -21,6 +21,7 @@ Diagnostics produce_sii(const ProduceContext& context, std::string& content, sii
     // would misread. Optional content it leaves out to fit is a note.
     sii::BuildOptions build;
     build.fit_to_eeprom = !context.options.sii_strict_size;
+    build.refuse_pdi_off = context.options.sii_strict;
     sii::BuildResult built = sii::build_image(*info, *context.device, build, context.document.path);
     diagnostics.append(std::move(built.diagnostics));
     if (diagnostics.has_errors()) return diagnostics;

@@ -70,10 +70,17 @@ void derive_pdo_entries(std::vector<Pdo>& pdos, const Dictionary* dictionary, Co
                 continue;
             }
             if (!mappable(entry->flags, pdo.direction)) {
+                // The flags that count are the mapped sub-index's own: on an ARRAY or RECORD the
+                // object's `pdo:` does not reach a sub-index of a declared data type.
+                const std::string want = pdo.direction == PdoDirection::rx ? "rx" : "tx";
+                const std::string advice =
+                    e.effective_subindex() == 0
+                        ? "give the object pdo: " + want
+                        : "give sub-index " + std::to_string(e.effective_subindex()) + " pdo: " + want + " (under the object's " +
+                              "entries, or in its data type's sub-items when the object names one)";
                 context.error(e.pos, "derive-pdo-entry-mapping",
                               std::string(direction) + " " + hex4(pdo.index) + " maps " + entry_ref(e) + " (" + entry->name +
-                                  "), which is not mappable into " + std::string(direction) + "s; give the object pdo: " +
-                                  (pdo.direction == PdoDirection::rx ? "rx" : "tx"));
+                                  "), which is not mappable into " + std::string(direction) + "s; " + advice);
                 continue;
             }
             if (e.bit_len == 0) {

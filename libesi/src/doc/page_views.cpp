@@ -1,11 +1,13 @@
 #include "doc/page_views.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include "doc/device_page.hpp"
 #include "doc/markup.hpp"
 #include "doc/page_root.hpp"
 #include "esi/doc/datasheet.hpp"
+#include "esi/plural.hpp"
 
 namespace esi::doc {
 
@@ -84,6 +86,23 @@ void build_page_views(const EsiDocument& document, const PagePlan& plan, const f
         entry.add("group_name", group ? index_context.text(group->names) : device.group_type.value_or(""));
         index_devices.add(entry.finish());
     }
+    // The catalogue is what its groups are called ("Digital I/O, Analog inputs"), in the order
+    // the devices use them; the title names vendor and catalogue, not the file (issue 23).
+    std::vector<std::string> catalogue_groups;
+    for (const Device* device : plan.devices) {
+        const EtherCATInfo* info = document.info_of(*device);
+        const Group* group = device->group_type && info ? info->find_group(*device->group_type) : nullptr;
+        index_context.info = info;
+        const std::string name = group ? index_context.text(group->names) : device->group_type.value_or("");
+        if (!name.empty() && std::find(catalogue_groups.begin(), catalogue_groups.end(), name) == catalogue_groups.end())
+            catalogue_groups.push_back(name);
+    }
+    std::string catalogue;
+    for (std::size_t i = 0; i < catalogue_groups.size() && i < 3; ++i) catalogue += (i ? ", " : "") + catalogue_groups[i];
+    if (catalogue_groups.size() > 3) catalogue += " …";
+    // A file without devices (a dictionary or module file) is what its pages are.
+    if (catalogue.empty())
+        for (const ExtraPage& extra : plan.extras) catalogue += (catalogue.empty() ? "" : ", ") + extra.title;
     ListBuilder index_extras(index_arena);
     for (const ExtraPage& extra : plan.extras) {
         page(output_dir / extra.file, [&](const PageContext& context) {
@@ -99,6 +118,11 @@ void build_page_views(const EsiDocument& document, const PagePlan& plan, const f
     PageObject root(index_arena);
     add_common(root, common);
     root.add("device_count", plan.devices.size());
+    root.add("device_count_text", counted(plan.devices.size(), "device page"));
+    root.add("catalogue", catalogue);
+    std::string title = common.vendor_name;
+    if (!catalogue.empty()) title += (title.empty() ? "" : ": ") + catalogue;
+    root.add("title", title.empty() ? common.source_file : title);
     root.add("has_devices", !plan.devices.empty());
     root.add("devices", index_devices.finish());
     root.add("has_extra_pages", !plan.extras.empty());

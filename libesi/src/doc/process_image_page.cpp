@@ -15,6 +15,7 @@
 #include "doc/process_image_view.hpp"
 #include "esi/doc/bit_layout.hpp"
 #include "esi/net/network.hpp"
+#include "esi/plural.hpp"
 
 namespace esi::doc {
 
@@ -120,6 +121,8 @@ ViewValue process_image_view(ViewArena& arena, const net::Network& n, std::strin
     root.add("cycle_time_us", n.master.cycle_time_us);
     root.add("process_data_bytes", n.image.process_data_bytes);
     root.add("frame_count", n.image.frames.size());
+    root.add("process_data_text", counted(n.image.process_data_bytes, "byte") + " of process data in " +
+                                      counted(n.image.frames.size(), "frame"));
     root.add("logical_base", hex(n.image.logical_base, 8));
     ListBuilder slaves(arena);
     for (const net::NetworkSlave& s : n.slaves) slaves.add(slave_row(s, arena));

@@ -5,6 +5,7 @@
 
 #include "doc/markup.hpp"
 #include "doc/sections.hpp"
+#include "esi/plural.hpp"
 
 namespace esi::doc {
 
@@ -31,6 +32,7 @@ ViewValue mailbox_sm(const SyncManager* sm, ViewArena& arena) {
     PageObject o(arena);
     o.add("start_hex", sm->start_address ? hex(*sm->start_address, 4) : std::string());
     o.add("size", sm->default_size);
+    o.add("size_text", sm->default_size ? counted(*sm->default_size, "byte") : std::string());
     return o.finish();
 }
 
@@ -44,8 +46,10 @@ ViewValue bootstrap_view(const Device& device, ViewArena& arena) {
     PageObject o(arena);
     o.add("out_start_hex", hex(word(0), 4));
     o.add("out_size", word(1));
+    o.add("out_size_text", counted(word(1), "byte"));
     o.add("in_start_hex", hex(word(2), 4));
     o.add("in_size", word(3));
+    o.add("in_size_text", counted(word(3), "byte"));
     return o.finish();
 }
 

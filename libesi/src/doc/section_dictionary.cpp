@@ -12,6 +12,7 @@
 #include "esi/codegen/entry_values.hpp"
 #include "esi/encoding.hpp"
 #include "esi/model/object_layout.hpp"
+#include "esi/plural.hpp"
 
 namespace esi::doc {
 
@@ -61,16 +62,34 @@ std::string value_text(const DecodedValue& v, const ObjectEntry& entry) {
     return {};
 }
 
-ViewValue entry_view(const ObjectEntry& e, std::string_view name, const PageContext& context) {
+std::string number_text(const Number& n) { return (n.negative ? "-" : "") + std::to_string(n.magnitude); }
+
+ViewValue entry_view(const ObjectEntry& e, std::string_view name, const DataTypeIndex& types, const PageContext& context) {
     PageObject o(*context.arena);
     const codegen::EntryValues values = codegen::decode_entry_values(e);
+    // An enumeration (DataType with EnumInfo) reads by its texts: the default with its name, and
+    // every value it can take.
+    const DataType* enumeration = types.find(e.type);
+    if (enumeration && enumeration->enums.empty()) enumeration = nullptr;
+    std::string default_text = value_text(values.default_value, e);
+    std::string enum_values;
+    if (enumeration) {
+        for (const EnumValue& v : enumeration->enums) {
+            const std::string value = number_text(v.value);
+            const std::string& text = context.text(v.texts);
+            if (!enum_values.empty()) enum_values += ", ";
+            enum_values += value + " = " + text;
+            if (!default_text.empty() && value == default_text && !text.empty()) default_text += " (" + text + ")";
+        }
+    }
     o.add("subindex_hex", hex(e.subindex, 2));
     o.add("name", name);
     o.add("type", e.type);
     o.add("bit_size", e.bit_size);
     o.add("access", e.flags && e.flags->access ? *e.flags->access : std::string());
     o.add("pdo_mapping", e.flags && e.flags->pdo_mapping ? *e.flags->pdo_mapping : std::string());
-    o.add("default", value_text(values.default_value, e));
+    o.add("default", default_text);
+    o.add("enum_values", enum_values);
     o.add("min", value_text(values.min, e));
     o.add("max", value_text(values.max, e));
     o.add("unit", e.info && e.info->unit && *e.info->unit != 0 ? hex(*e.info->unit, 8) : std::string());
@@ -100,10 +119,10 @@ ViewValue dictionary_section(const Dictionary* dictionary, const PageContext& co
         o.add("bit_size", object->bit_size);
         const bool is_var = layout.code == ObjectCode::var && layout.entries.size() == 1;
         const std::string& name = context.text(object->names);
-        o.add("var", is_var ? entry_view(layout.entries.front(), name, context) : ViewValue::null());
+        o.add("var", is_var ? entry_view(layout.entries.front(), name, types, context) : ViewValue::null());
         ListBuilder entries(arena);
         if (!is_var)
-            for (const ObjectEntry& e : layout.entries) entries.add(entry_view(e, e.name, context));
+            for (const ObjectEntry& e : layout.entries) entries.add(entry_view(e, e.name, types, context));
         entry_count += is_var ? 1 : layout.entries.size();
         o.add("entries", entries.finish());
         list.add(o.finish());
@@ -111,6 +130,7 @@ ViewValue dictionary_section(const Dictionary* dictionary, const PageContext& co
     PageObject section(arena);
     section.add("object_count", objects.size());
     section.add("entry_count", entry_count);
+    section.add("count_text", counted(objects.size(), "object") + ", " + counted(entry_count, "entry", "entries"));
     section.add("objects", list.finish());
     return section.finish();
 }

@@ -6,6 +6,7 @@
 #include "doc/markup.hpp"
 #include "doc/process_data.hpp"
 #include "doc/sections.hpp"
+#include "esi/plural.hpp"
 
 namespace esi::doc {
 
@@ -106,6 +107,7 @@ ViewValue process_images_list(const Device& device, const PageContext& context) 
         o.add("sm_type", sm ? sm->type : std::string("(no such SyncManager)"));
         o.add("start_hex", sm && sm->start_address ? hex(*sm->start_address, 4) : std::string());
         o.add("default_size", sm ? sm->default_size : std::nullopt);
+        o.add("default_size_text", sm && sm->default_size ? counted(*sm->default_size, "byte") : std::string());
         o.add("bit_size", image.bit_size);
         o.add("size", size_text(image.bit_size));
         o.add("pdos", pdo_list_text(image.pdos));

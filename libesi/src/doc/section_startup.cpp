@@ -9,17 +9,23 @@
 
 #include "doc/markup.hpp"
 #include "doc/sections.hpp"
+#include "esi/plural.hpp"
 
 namespace esi::doc {
 
 namespace {
 
-// Cycle/shift time in ns, with its factor (ETG.2000 DcOpModeType: CycleTimeSync1 Factor is a
-// multiple of Sync0's cycle).
-std::string dc_time_text(const std::optional<DcTime>& t) {
+// Cycle/shift time with its factor spelled out: the time is `value` ns plus `factor` times the
+// reference (ETG.2000 DcOpModeType: the bus cycle for Sync0, the SYNC0 cycle for Sync1's cycle;
+// a negative factor divides it), so "1 × the cycle", not "0 ns × 1".
+std::string dc_time_text(const std::optional<DcTime>& t, std::string_view reference) {
     if (!t) return {};
-    std::string out = std::to_string(t->value) + " ns";
-    if (t->factor) out += " × " + std::to_string(*t->factor);
+    if (!t->factor || *t->factor == 0) return std::to_string(t->value) + " ns";
+    const std::int64_t factor = *t->factor;
+    std::string out = factor > 0 ? std::to_string(factor) + " × " + std::string(reference)
+                                 : std::string(reference) + " / " + std::to_string(-factor);
+    if (t->value > 0) out += " + " + std::to_string(t->value) + " ns";
+    else if (t->value < 0) out += " − " + std::to_string(-t->value) + " ns";
     return out;
 }
 
@@ -91,10 +97,10 @@ ViewValue dc_section(const Device& device, const PageContext& context) {
         o.add("name", m.name);
         o.add("description", m.desc.value_or(""));
         o.add("assign_activate_hex", m.has_assign_activate ? hex(m.assign_activate, 4) : std::string());
-        o.add("cycle_sync0", dc_time_text(m.cycle_time_sync0));
-        o.add("shift_sync0", dc_time_text(m.shift_time_sync0));
-        o.add("cycle_sync1", dc_time_text(m.cycle_time_sync1));
-        o.add("shift_sync1", dc_time_text(m.shift_time_sync1));
+        o.add("cycle_sync0", dc_time_text(m.cycle_time_sync0, "the cycle"));
+        o.add("shift_sync0", dc_time_text(m.shift_time_sync0, "the cycle"));
+        o.add("cycle_sync1", dc_time_text(m.cycle_time_sync1, "the SYNC0 cycle"));
+        o.add("shift_sync1", dc_time_text(m.shift_time_sync1, "the SYNC0 cycle"));
         modes.add(o.finish());
     }
     PageObject section(arena);
@@ -148,6 +154,7 @@ ViewValue init_cmds_section(const Mailbox* mailbox, const PageContext& context) 
     }
     PageObject section(arena);
     section.add("command_count", commands.size());
+    section.add("command_count_text", counted(commands.size(), "command"));
     section.add("transitions", groups.finish());
     return section.finish();
 }

@@ -7,6 +7,7 @@
 #include "esi/import/import.hpp"
 
 #include <filesystem>
+#include <map>
 
 #include "esi/diff/diff.hpp"
 #include "esi/yaml/source.hpp"
@@ -122,8 +123,24 @@ ImportResult import_device_source(const EsiDocument& document, const ImportOptio
     YNode root = file_node(w, document, info);
     if (document.kind == DocumentKind::ethercat_info) {
         YNode devices = YNode::seq();
+        // Two devices with one identity: the YAML source refuses that (yaml-duplicate) when it is
+        // loaded; say so here already, naming both places in the ESI.
+        std::map<std::pair<std::uint32_t, std::uint32_t>, const Device*> identities;
         for (const auto& d : info.devices) {
             if (options.device && !options.device->matches(d)) continue;
+            if (d.type.product_code && d.type.revision_no) {
+                const auto [it, inserted] = identities.emplace(std::pair{*d.type.product_code, *d.type.revision_no}, &d);
+                if (!inserted) {
+                    Diagnostic& diag = out.diagnostics.emplace(
+                        Severity::warning, "import-identity",
+                        "this device has the product code " + import_detail::hex_text(*d.type.product_code, 8) + " and revision " +
+                            import_detail::hex_text(*d.type.revision_no, 8) + " of another; the YAML source declares an identity once, so it " +
+                            "is refused until one of them changes",
+                        document.path, d.type.pos.known() ? d.type.pos : d.pos);
+                    diag.notes.push_back({document.path, it->second->type.pos.known() ? it->second->type.pos : it->second->pos,
+                                          "the other device"});
+                }
+            }
             OmitPlan plan;
             if (options.omit_derived) plan = choose_plan(document, info, d);
             if (plan.any()) ++out.derived_devices;

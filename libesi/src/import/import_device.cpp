@@ -44,8 +44,29 @@ YNode ImportWriter::dc(const Dc& dc) {
     return m;
 }
 
-YNode ImportWriter::eeprom(const Eeprom& e, const std::string& path) {
+const EscPreset* ImportWriter::esc_preset_of(const Eeprom& e) {
+    // Only an exact match: `esc:` must give back the same ConfigData, ByteSize and BootStrap.
+    if (e.data || !e.config_data || !e.byte_size) return nullptr;
+    const auto config = e.config_data->bytes();
+    if (!config) return nullptr;
+    std::vector<std::uint8_t> boot;
+    if (e.boot_strap) {
+        const auto b = e.boot_strap->bytes();
+        if (!b) return nullptr;
+        boot = *b;
+    }
+    return match_esc_preset(*config, *e.byte_size, boot);
+}
+
+YNode ImportWriter::eeprom(const Eeprom& preset_or_not, const std::string& path) {
     YNode m = YNode::map();
+    Eeprom e = preset_or_not;
+    if (esc_preset_of(e)) {
+        // `esc:` stands for these three (docs/yaml-format.md, ESC presets).
+        e.byte_size.reset();
+        e.config_data.reset();
+        e.boot_strap.reset();
+    }
     auto hex_field = [&](const char* key, const std::optional<HexData>& h) {
         if (!h) return;
         if (valid_hex(*h)) m.set(key, hex_data(*h));
@@ -87,10 +108,13 @@ YNode ImportWriter::device(const Device& d, const EtherCATInfo& info, const Omit
     if (d.type.product_code) path = "Device[" + hex_text(*d.type.product_code, 8) + ":" + hex_text(d.type.revision_no.value_or(0), 8) + "]";
     YNode m = YNode::map();
     m.set("type", YNode::text(d.type.text));
-    if (!d.type.product_code) warn(path + "/Type@ProductCode", "missing; the YAML format requires it");
-    if (!d.type.revision_no) warn(path + "/Type@RevisionNo", "missing; the YAML format requires it");
-    m.set("product_code", YNode::hex(d.type.product_code.value_or(0), 8));
-    m.set("revision", YNode::hex(d.type.revision_no.value_or(0), 8));
+    // A passive terminal has no identity to write; the source leaves both keys out as the file does.
+    if (!is_passive_terminal(d)) {
+        if (!d.type.product_code) warn(path + "/Type@ProductCode", "missing; the YAML format requires it");
+        if (!d.type.revision_no) warn(path + "/Type@RevisionNo", "missing; the YAML format requires it");
+        m.set("product_code", YNode::hex(d.type.product_code.value_or(0), 8));
+        m.set("revision", YNode::hex(d.type.revision_no.value_or(0), 8));
+    }
     if (d.type.serial_no) m.set("serial_no", YNode::hex(*d.type.serial_no, 8));
     if (d.type.tc_cfg_mode_safe_op) m.set("tc_cfg_mode_safe_op", YNode::boolean(*d.type.tc_cfg_mode_safe_op));
     set_extras(m, "type_xml", d.type.extras);
@@ -122,7 +146,12 @@ YNode ImportWriter::device(const Device& d, const EtherCATInfo& info, const Omit
     }
     if (dict) dictionary(m, *dict, path, plan, &d);
 
-    if (d.eeprom) m.set("eeprom", eeprom(*d.eeprom, path));
+    if (d.eeprom) {
+        const EscPreset* preset = esc_preset_of(*d.eeprom);
+        if (preset) m.set("esc", YNode::text(std::string(preset->name)));
+        YNode e = eeprom(*d.eeprom, path);
+        if (!e.empty() || !preset) m.set("eeprom", std::move(e));
+    }
     if (d.mailbox) {
         m.set("mailbox", mailbox(*d.mailbox, &d, plan, path + "/Mailbox"));
         if (d.mailbox->coe && !d.mailbox->coe->init_cmds.empty()) {

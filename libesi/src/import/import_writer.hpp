@@ -10,6 +10,8 @@
 
 #include "esi/derive/derive.hpp"
 #include "esi/diagnostic.hpp"
+#include "esi/model/esc_preset.hpp"
+#include "esi/model/passive_terminal.hpp"
 #include "esi/model/ethercat_info.hpp"
 #include "import/yaml_emitter.hpp"
 
@@ -69,7 +71,8 @@ private:
     YNode dc(const Dc& dc);
     YNode dc_time(const DcTime& t);
     YNode slots(const Slots& s, const std::string& path);
-    YNode eeprom(const Eeprom& e, const std::string& path);
+    YNode eeprom(const Eeprom& e, const std::string& path);  // without what `esc:` stands for
+    static const EscPreset* esc_preset_of(const Eeprom& e);
 
     Diagnostics& warnings_;
 };

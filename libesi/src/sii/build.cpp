@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <map>
 
+#include "esi/model/esc_preset.hpp"
 #include "esi/number.hpp"
 #include "esi/sii/decode.hpp"
 #include "esi/sii/encode.hpp"
@@ -71,6 +72,17 @@ void Builder::build_header() {
                      eeprom->config_data->pos);
             for (std::size_t i = 0; i < bytes->size() && i < config_area_bytes; ++i) h.config_data[i] = (*bytes)[i];
         }
+    }
+
+    if (!eeprom || !eeprom->config_data) {
+        // Nothing a master reads offline shows it, but the image leaves the microcontroller
+        // without any access to the ESC (issue 23): say so, and how to fix it.
+        diag(options_.refuse_pdi_off ? Severity::error : Severity::warning, "sii-pdi-off",
+             fmt::format("no Eeprom/ConfigData: PDI control (word 0) is 0, so the image switches the ESC's process data "
+                         "interface off and the device's microcontroller cannot reach the ESC; name the ESC in the device "
+                         "source (esc: {}) or give Eeprom/ConfigData from its datasheet",
+                         esc_preset_names()),
+             eeprom ? eeprom->pos : device_.pos);
     }
 
     if (info_.vendor && info_.vendor->id) h.vendor_id = *info_.vendor->id;

@@ -92,9 +92,10 @@ void Builder::add_category(std::uint16_t type, CategoryContent content) {
 
 General Builder::build_general() {
     General g;
-    g.order_idx = add_string(device_.type.text, device_.type.pos, "Type");
-    if (device_.group_type) g.group_idx = add_string(*device_.group_type, device_.group_type_pos, "GroupType");
-    g.name_idx = add_string(localized(device_.names), device_.pos, "Device Name");
+    if (!omitted_.order_string) g.order_idx = add_string(device_.type.text, device_.type.pos, "Type");
+    if (device_.group_type && !omitted_.group_string)
+        g.group_idx = add_string(*device_.group_type, device_.group_type_pos, "GroupType");
+    if (!omitted_.name_string) g.name_idx = add_string(localized(device_.names), device_.pos, "Device Name");
     g.group_idx_duplicate = g.group_idx;
 
     if (device_.mailbox) {

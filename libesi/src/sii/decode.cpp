@@ -435,6 +435,28 @@ std::size_t DecodedImage::count(Severity severity) const {
         std::count_if(faults.begin(), faults.end(), [&](const Fault& f) { return f.severity == severity; }));
 }
 
+namespace {
+
+// PDI control 0 leaves a microcontroller no access to the ESC; it is a fault when the image itself
+// says the device has one to serve (a mailbox or PDOs) and the ESC does not emulate the device
+// (0x0141 bit 0, as couplers without a microcontroller have).
+void check_pdi(DecodedImage& out) {
+    const Header& h = out.image.header;
+    const std::uint8_t pdi_control = h.config_data[0];
+    const bool device_emulation = (h.config_data[1] & 0x01) != 0;
+    if (pdi_control != 0 || device_emulation) return;
+    const bool mailbox = h.standard_receive_size != 0 || h.mailbox_protocols != 0;
+    const bool process_data = out.image.find(category::tx_pdo) || out.image.find(category::rx_pdo);
+    if (!mailbox && !process_data) return;
+    fault(out.faults, Severity::error, "sii-pdi-off", 0,
+          fmt::format("PDI control (word 0) is 0: the ESC's process data interface is off and the ESC does not emulate the "
+                      "device, but the image describes {}, which only a microcontroller behind the PDI can serve; the "
+                      "device stays in INIT",
+                      mailbox && process_data ? "a mailbox and process data" : mailbox ? "a mailbox" : "process data"));
+}
+
+}  // namespace
+
 DecodedImage decode_image(std::span<const std::uint8_t> bytes) {
     DecodedImage out;
     out.byte_count = bytes.size();
@@ -451,6 +473,7 @@ DecodedImage decode_image(std::span<const std::uint8_t> bytes) {
     if (out.header_complete) {
         walk_categories(bytes, out);
         check_categories(out);
+        check_pdi(out);
         if (bytes.size() > out.image.header.eeprom_bytes())
             fault(out.faults, Severity::warning, "sii-larger-than-size", out.image.header.eeprom_bytes(),
                   fmt::format("the image has {} bytes but word 0x3E (0x{:04X}) declares an EEPROM of {} bytes",

@@ -83,6 +83,24 @@ std::vector<FitStep> fit_steps(const Device& device, const BuildOptions& options
                          "nothing else optional is left; a master then takes the process data from the ESI",
                          omitted});
     }
+    // Last, the General category's optional strings, as vendor tools make their smallest images
+    // (Beckhoff's BK couplers on 256-byte EEPROMs): the device name stays, masters show it.
+    if (device.group_type && !device.group_type->empty()) {
+        omitted.group_string = true;
+        steps.push_back({fmt::format("the group name \"{}\" (General, GroupType)", *device.group_type),
+                         "masters group devices by the ESI; the SII group string is for display only", omitted});
+    }
+    if (!device.type.text.empty()) {
+        omitted.order_string = true;
+        steps.push_back({fmt::format("the order number \"{}\" (General, Type)", device.type.text),
+                         "a master identifies the device by vendor id, product code and revision, not by this string",
+                         omitted});
+    }
+    if (!device.names.empty()) {
+        omitted.name_string = true;
+        steps.push_back({"the device name (General, Name)",
+                         "the last optional string: a master names the device from the ESI it matches by identity", omitted});
+    }
     return steps;
 }
 

@@ -24,7 +24,10 @@ struct FitStep {
 //   2. the descriptions of the DC op modes (Beckhoff's EL2262 image names its modes only);
 //   3. the DC category (masters configure DC from the ESI; IgH and SOEM do not read it);
 //   4. the PDOs that are not assigned by default (no @Sm);
-//   5. the remaining PDO categories.
+//   5. the remaining PDO categories;
+//   6. the group name string of the General category;
+//   7. the order number (Type) string of the General category;
+//   8. the device name string of the General category.
 [[nodiscard]] std::vector<FitStep> fit_steps(const Device& device, const BuildOptions& options);
 
 }  // namespace esi::sii

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "esi/data_types.hpp"
+#include "esi/model/esc_preset.hpp"
 #include "esi/model/mailbox_protocol.hpp"
 #include "esi/sii/text.hpp"
 
@@ -14,6 +15,12 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 std::string protocols(std::uint16_t bits) { return mailbox_protocol_names(bits, "none"); }
+
+// The PDI type of word 0's low byte by its datasheet name (register 0x0140).
+std::string pdi_label(std::uint8_t pdi_control) {
+    if (const auto name = pdi_type_name(pdi_control)) return "PDI " + std::string(*name);
+    return fmt::format("PDI type 0x{:02X}, not one the ESC datasheets define", pdi_control);
+}
 
 template <typename T, std::size_t N>
 std::string bit_names(T bits, const std::pair<T, std::string_view> (&names)[N]) {
@@ -132,7 +139,7 @@ private:
     void header() {
         const Header& h = image_.header;
         line("Header");
-        line("  0x00 PDI control               0x{:04X}", h.config_word(0));
+        line("  0x00 PDI control               0x{:04X} ({})", h.config_word(0), pdi_label(h.config_data[0]));
         line("  0x01 PDI configuration         0x{:04X}", h.config_word(1));
         line("  0x02 SYNC impulse length       0x{:04X} ({} ns)", h.config_word(2), 10u * h.config_word(2));
         line("  0x03 PDI configuration 2       0x{:04X}", h.config_word(3));
@@ -339,6 +346,7 @@ std::string render_dump_json(const DecodedImage& d, std::string_view path) {
         for (std::size_t i = 0; i < 7; ++i) config.push_back(h.config_word(i));
         header["config_words"] = config;
         header["pdi_control"] = h.config_word(0);
+        header["pdi_type"] = pdi_label(h.config_data[0]);
         header["pdi_configuration"] = h.config_word(1);
         header["sync_impulse_length"] = h.config_word(2);
         header["pdi_configuration2"] = h.config_word(3);

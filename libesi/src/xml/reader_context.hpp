@@ -94,8 +94,10 @@ private:
         const ParsedNumber parsed = parse_number(text);
         if (!parsed.ok()) {
             report(Severity::error, "xml-number-format",
-                   describe(site) + ": '" + excerpt(trim(text)) + "' is not a number (" + std::string(to_string(parsed.error)) +
-                       "); ESI numbers are decimal or #x hex",
+                   describe(site) + ": '" + excerpt(trim(text)) + "' is not a number" +
+                       // The reason only where it adds to "not a number" (not "(not a number)").
+                       (parsed.error == NumberError::bad_digit ? std::string() : " (" + std::string(to_string(parsed.error)) + ")") +
+                       "; ESI numbers are decimal or #x hex",
                    pos_of(site.element));
             return std::nullopt;
         }

@@ -15,7 +15,7 @@ constexpr K group[] = {"type", "name", "comment", "sort_order", "parent_group", 
 constexpr K device[] = {"type",       "product_code", "revision",  "serial_no",      "tc_cfg_mode_safe_op", "type_xml",
                         "name",       "comment",      "url",       "group",          "physics",             "invisible",
                         "image_data", "image_file",   "image16x14", "profile",       "objects",             "data_types",
-                        "dictionary_xml", "eeprom",   "mailbox",   "sms",            "fmmus",               "sync_units",
+                        "dictionary_xml", "esc",      "eeprom",   "mailbox",   "sms",            "fmmus",               "sync_units",
                         "rxpdo",      "txpdo",        "init",      "dc",             "slots",               "limits",
                         "derive",     "xml"};
 constexpr K profile[] = {"number", "add_info", "channel", "dictionary_file", "xml"};

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "esi/model/esc_preset.hpp"
 #include "esi/yaml/limits.hpp"
 #include "esi/text_distance.hpp"
 #include "yaml/source_parser.hpp"
@@ -80,6 +81,43 @@ std::optional<Eeprom> SourceParser::eeprom(const Node& node) {
     r_.optional_bool(*f, "assign_to_pdi", e.assign_to_pdi);
     extras(*f, "xml", e.extras);
     return e;
+}
+
+void SourceParser::esc_preset(const Node& node, Device& d) {
+    const auto name = r_.text(node, "esc");
+    if (!name) return;
+    const EscPreset* preset = find_esc_preset(*name);
+    if (!preset) {
+        std::vector<std::string_view> names;
+        for (const auto& p : esc_presets()) names.push_back(p.name);
+        const std::string hint = did_you_mean(*name, names);
+        r_.error(node, "yaml-value",
+                 "'" + *name + "' is not an ESC preset" + (hint.empty() ? std::string(".") : hint) + " The presets are " + esc_preset_names() +
+                     "; an ESC not listed takes 'eeprom: {config_data: …}' from its datasheet");
+        return;
+    }
+    if (d.eeprom && d.eeprom->data) {
+        r_.error(node, "yaml-conflict", "'eeprom.data' is a complete EEPROM image; it excludes 'esc' (the preset's ConfigData would not be used)");
+        return;
+    }
+    // What the source states explicitly wins over the preset (docs/yaml-format.md).
+    if (!d.eeprom) {
+        d.eeprom.emplace();
+        d.eeprom->pos = pos_of(node);
+    }
+    Eeprom& e = *d.eeprom;
+    if (!e.byte_size) {
+        e.byte_size = preset->eeprom_bytes;
+        e.byte_size_pos = pos_of(node);
+    }
+    if (!e.config_data) {
+        e.config_data = HexData::from_bytes(preset->config_bytes());
+        e.config_data->pos = pos_of(node);
+    }
+    if (!e.boot_strap && !preset->boot_strap.empty()) {
+        e.boot_strap = HexData::from_bytes(preset->boot_strap_bytes());
+        e.boot_strap->pos = pos_of(node);
+    }
 }
 
 std::vector<SyncManager> SourceParser::sync_managers(const Node& node, std::vector<SourcePos>& size_pos) {
@@ -263,8 +301,18 @@ std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional
         d.type.text = r_.text(*f->find("type"), "type").value_or("");
         d.type.pos = pos_of(*f->find("type"));
     }
-    if (r_.require(*f, "product_code", "a device")) d.type.product_code = r_.integer<std::uint32_t>(*f->find("product_code"), "product_code");
-    if (r_.require(*f, "revision", "a device")) d.type.revision_no = r_.integer<std::uint32_t>(*f->find("revision"), "revision");
+    // A passive terminal (Beckhoff EL9xxx end and supply terminals) has no ESC and so no EtherCAT
+    // identity: its Type has neither ProductCode nor RevisionNo. Without both keys and without any
+    // key that needs an ESC, the device is such a terminal (docs/yaml-format.md, "Devices").
+    static constexpr std::string_view esc_keys[] = {"mailbox", "objects", "data_types", "dictionary_xml", "sms",  "fmmus",
+                                                    "sync_units", "rxpdo", "txpdo", "init", "dc", "slots", "eeprom", "esc", "profile"};
+    const bool passive = !f->has("product_code") && !f->has("revision") &&
+                         std::none_of(std::begin(esc_keys), std::end(esc_keys), [&](std::string_view k) { return f->has(k); });
+    if (!passive) {
+        if (r_.require(*f, "product_code", "a device"))
+            d.type.product_code = r_.integer<std::uint32_t>(*f->find("product_code"), "product_code");
+        if (r_.require(*f, "revision", "a device")) d.type.revision_no = r_.integer<std::uint32_t>(*f->find("revision"), "revision");
+    }
     r_.optional_integer(*f, "serial_no", d.type.serial_no);
     r_.optional_bool(*f, "tc_cfg_mode_safe_op", d.type.tc_cfg_mode_safe_op);
     extras(*f, "type_xml", d.type.extras);
@@ -280,10 +328,15 @@ std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional
     } else if (group_count == 1 && only_group) {
         d.group_type = *only_group;
         d.group_type_pos = d.pos;
+    } else if (group_count == 0 && !d.type.text.empty()) {
+        // Nothing declared and nothing named: the device's type is its group, and derivation
+        // adds that Group (docs/yaml-format.md, "Devices").
+        d.group_type = d.type.text;
+        d.group_type_pos = d.type.pos;
     } else {
         r_.error(f->node(), "yaml-missing-key",
-                 group_count == 0 ? "a device needs 'group' (its Group type)"
-                                  : "a device needs 'group' when several groups are declared");
+                 group_count == 0 ? "a device needs 'group' (its Group type) or a 'type' to derive it from"
+                                  : "a device needs 'group' when several groups are declared (it names one group's 'type')");
     }
     // Two MII ports is the usual device; an E-Bus terminal writes "KK".
     if (const Node* n = f->find("physics")) {
@@ -350,6 +403,7 @@ std::optional<ParsedDevice> SourceParser::device(const Node& node, std::optional
     if (const Node* n = f->find("dc")) d.dc = dc(*n);
     if (const Node* n = f->find("slots")) d.slots = slots(*n, modules);
     if (const Node* n = f->find("eeprom")) d.eeprom = eeprom(*n);
+    if (const Node* n = f->find("esc")) esc_preset(*n, d);
     if (const Node* n = f->find("limits")) {
         out.limits = limits(*n);
         intent.limits = *out.limits;

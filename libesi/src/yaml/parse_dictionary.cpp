@@ -329,6 +329,15 @@ void SourceParser::object(const Node& key, const Node& value, Dictionary& dictio
                     e.explicit_offset = true;
                 }
                 e.item.flags = flags(*ef);
+                // `pdo:` on a RECORD built from its entries applies to every sub-index but the
+                // count that has no `pdo` of its own (the mapping flags are per sub-index in ESI).
+                if (*sub != 0 && o.flags && o.flags->pdo_mapping && !ef->has("pdo")) {
+                    if (!e.item.flags) {
+                        e.item.flags.emplace();
+                        e.item.flags->pos = ef->pos();
+                    }
+                    e.item.flags->pdo_mapping = o.flags->pdo_mapping;
+                }
                 e.info = info(*ef, dictionary, e.item.type, "an entry");
                 extras(*ef, "xml", e.item.extras);
                 records.push_back(std::move(e));

@@ -96,6 +96,7 @@ private:
                                        const std::vector<ParsedModule>& modules, std::size_t group_count,
                                        const std::string* only_group);
     std::optional<Eeprom> eeprom(const Node& node);
+    void esc_preset(const Node& node, Device& d);  // `esc:` fills what `eeprom:` leaves out
     std::vector<SyncManager> sync_managers(const Node& node, std::vector<SourcePos>& size_pos);
     std::vector<Fmmu> fmmus(const Node& node);
     std::vector<SyncUnit> sync_units(const Node& node);

@@ -59,6 +59,9 @@ struct GenerateOptions {
     // The "sii" kind refuses an image larger than Eeprom/ByteSize instead of leaving out optional
     // content until it fits (esi-gen --strict-size; docs/sii.md §1).
     bool sii_strict_size = false;
+    // The "sii" kind refuses an image that switches the PDI off (a device without Eeprom/ConfigData
+    // and without `esc:`) instead of warning (esi-gen --strict; docs/sii.md §2).
+    bool sii_strict = false;
 };
 
 struct ProduceContext {

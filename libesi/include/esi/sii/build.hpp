@@ -32,6 +32,9 @@ struct BuildOptions {
     // vendor tools make images (docs/sii.md §1, "Images larger than the EEPROM"); false refuses
     // it instead (esi-sii build --strict-size).
     bool fit_to_eeprom = true;
+    // A device without Eeprom/ConfigData gets PDI control 0 (the PDI off): a warning, or with
+    // this an error (esi-gen --strict). docs/sii.md §2.
+    bool refuse_pdi_off = false;
 };
 
 // Optional content a build left out so that the image fits its EEPROM; all false is the whole
@@ -41,8 +44,13 @@ struct Omissions {
     bool unassigned_pdos = false;  // the PDOs without @Sm (not in the default assignment)
     bool dc = false;               // the DC category
     bool dc_descriptions = false;  // the description strings of the DC op modes
+    bool group_string = false;     // the General category's group name (GroupType)
+    bool order_string = false;     // the General category's order number (Type)
+    bool name_string = false;      // the General category's device name
 
-    [[nodiscard]] bool any() const { return pdos || unassigned_pdos || dc || dc_descriptions; }
+    [[nodiscard]] bool any() const {
+        return pdos || unassigned_pdos || dc || dc_descriptions || group_string || order_string || name_string;
+    }
 };
 
 struct BuildResult {
