@@ -11,11 +11,14 @@
 #include "cli_common.hpp"
 #include "color_option.hpp"
 #include "esi/check/registry.hpp"
+#include "esi/io/atomic_write.hpp"
 #include "esi/io/read_file.hpp"
 #include "esi/lint/lint.hpp"
+#include "esi/report/baseline.hpp"
 #include "esi/report/gitlab.hpp"
 #include "esi/report/lint_output.hpp"
 #include "esi/report/sarif.hpp"
+#include "esi/report/statistics.hpp"
 #include "esi/version.hpp"
 #include "out_of_memory.hpp"
 
@@ -45,10 +48,15 @@ int main(int argc, char** argv) {
     std::string explain;
     bool list_rules = false;
     bool no_source = false;
+    bool statistics = false;
+    std::vector<std::string> exclude;
+    std::string baseline_path;
+    std::string write_baseline_path;
     std::string color;
     unsigned jobs = 0;
     app.add_option("paths", paths,
-                   "ESI files, directories (recursive *.xml; hidden folders and CMake build trees skipped) or - for stdin");
+                   "ESI files, YAML device sources (*.yaml, *.yml), directories (recursive *.xml; hidden folders and CMake "
+                   "build trees skipped) or - for stdin");
     std::string sarif_help_base;
     app.add_option("--format", format,
                    "text, json, sarif, github (workflow annotations) or gitlab (Code Quality report); with --list-rules: text, "
@@ -65,6 +73,15 @@ int main(int argc, char** argv) {
     app.add_option("--explain", explain, "print one rule's rationale with a bad and a good example");
     app.add_option("-j,--jobs", jobs, "files linted in parallel (default: all cores)");
     app.add_flag("--no-source", no_source, "text format: do not quote the source line");
+    app.add_option("--exclude", exclude,
+                   "glob of files a directory walk does not lint (relative to the current directory; repeatable; added to "
+                   "the config's exclude:)")
+        ->type_name("GLOB")
+        ->allow_extra_args(false);  // one glob per --exclude: the paths follow
+    app.add_option("--baseline", baseline_path, "do not report or count the findings this baseline file holds")->type_name("FILE");
+    app.add_option("--write-baseline", write_baseline_path, "write every finding of this run to a baseline file")
+        ->type_name("FILE");
+    app.add_flag("--statistics", statistics, "print the number of findings per rule and severity instead of the findings");
     esi::cli::add_color_option(app, color, "text format output");
     esi::cli::add_version_flag(app, "esi-lint");
     if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
@@ -95,10 +112,26 @@ int main(int argc, char** argv) {
         return exit_usage;
     }
 
+    if (statistics && format != "text" && format != "json") {
+        std::cerr << "esi-lint: --statistics prints text or json\n";
+        return exit_usage;
+    }
+    std::optional<esi::Baseline> baseline;
+    if (!baseline_path.empty()) {
+        std::string error;
+        const std::optional<std::string> text = esi::read_file_bytes(baseline_path, error);
+        if (text) baseline = esi::parse_baseline(*text, error);
+        if (!baseline) {
+            std::cerr << "esi-lint: --baseline " << baseline_path << ": " << error << "\n";
+            return exit_usage;
+        }
+    }
+
     esi::LintOptions options;
     if (!config.empty()) options.config_path = config;
     if (!xsd.empty()) options.xsd_dir = xsd;
     options.jobs = jobs;
+    options.exclude = exclude;
 
     esi::LintReport report;
     std::vector<std::filesystem::path> files;
@@ -124,18 +157,31 @@ int main(int argc, char** argv) {
         std::optional<std::filesystem::path> config_path = options.config_path;
         if (!config_path) config_path = esi::find_config_for(std::filesystem::current_path() / "stdin.xml");
         esi::EffectiveConfig effective;
-        if (config_path) {
+        if (config_path && !report.stopped_by_config) {
             esi::ConfigResult loaded = esi::load_lint_config(*config_path);
             report.config_diagnostics.append(std::move(loaded.diagnostics));
             if (loaded.config) effective = esi::effective_config(*loaded.config, "stdin.xml");
+            else report.stopped_by_config = true;
         }
-        report.files.push_back(esi::lint_bytes(*bytes, "<stdin>", effective, options.xsd_dir));
+        if (!report.stopped_by_config) report.files.push_back(esi::lint_bytes(*bytes, "<stdin>", effective, options.xsd_dir));
     }
 
     std::error_code no_cwd;
     const std::filesystem::path source_root = std::filesystem::current_path(no_cwd);  // the checkout root in CI
+    if (!write_baseline_path.empty() && !report.stopped_by_config) {
+        const std::string text = esi::render_baseline(report, source_root);
+        const esi::Diagnostics written = esi::write_file_atomically(write_baseline_path, text);
+        for (const auto& d : written) std::cerr << esi::format_diagnostic(d);
+        if (written.has_errors()) return exit_usage;
+        // What was just written is the baseline of this run: the report shows what it left out.
+        std::string ignored;
+        baseline = esi::parse_baseline(text, ignored);
+    }
+    if (baseline) esi::apply_baseline(report, *baseline, source_root);
+
     std::string output;
-    if (format == "json") output = esi::render_json(report);
+    if (statistics) output = format == "json" ? esi::render_statistics_json(report) : esi::render_statistics_text(report);
+    else if (format == "json") output = esi::render_json(report);
     else if (format == "sarif")
         output = esi::render_sarif(report, {.tool_version = std::string(esi::version()),
                                             .source_root = source_root,
@@ -145,7 +191,7 @@ int main(int argc, char** argv) {
     else output = esi::render_text(report, {.show_source = !no_source, .color = esi::cli::color_enabled(color, STDOUT_FILENO)});
     esi::cli::write_stdout(output);
 
-    if (report.any_unreadable() || report.config_diagnostics.has_errors()) return exit_usage;
+    if (report.any_unreadable() || report.config_diagnostics.has_errors() || report.stopped_by_config) return exit_usage;
     for (const auto& file : report.files)
         for (const auto& d : file.diagnostics)
             if (reaches(d.severity, fail_on)) return exit_findings;
