@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <iterator>
@@ -13,6 +14,7 @@
 #include "esi/check/registry.hpp"
 #include "esi/io/atomic_write.hpp"
 #include "esi/io/read_file.hpp"
+#include "esi/lint/fix.hpp"
 #include "esi/lint/lint.hpp"
 #include "esi/report/baseline.hpp"
 #include "esi/report/gitlab.hpp"
@@ -35,6 +37,48 @@ bool reaches(esi::Severity severity, const std::string& fail_on) {
     return severity == esi::Severity::error;
 }
 
+// --fix and --diff on the files whose findings have fixes. --diff prints the diffs and gives the
+// exit code (1 when there is something to fix, as ruff does); --fix writes the files, reports what
+// it did on stderr and returns nullopt so that the files are linted again.
+std::optional<int> fix_files(const esi::LintReport& report, const esi::LintOptions& options, bool show_diff) {
+    std::size_t fixed_files = 0;
+    std::size_t fixed_findings = 0;
+    bool failed = false;
+    std::string diffs;
+    for (const auto& file : report.files) {
+        const bool fixable = std::any_of(file.diagnostics.begin(), file.diagnostics.end(), [](const esi::Diagnostic& d) { return d.fix.has_value(); });
+        if (!fixable) continue;
+        const esi::FixedText fixed = esi::fix_file(file.path, options);
+        if (!fixed.refused.empty()) {
+            std::cerr << file.path << ": note: not fixed: " << fixed.refused << "\n";
+            continue;
+        }
+        if (fixed.applied == 0) continue;
+        if (show_diff) {
+            diffs += esi::unified_diff(fixed.original, fixed.edits, file.path);
+        } else {
+            const esi::Diagnostics written = esi::write_fixed_file(file.path, fixed);
+            for (const auto& d : written) std::cerr << esi::format_diagnostic(d);
+            if (written.has_errors()) {
+                failed = true;
+                continue;
+            }
+        }
+        ++fixed_files;
+        fixed_findings += fixed.applied;
+    }
+    if (show_diff) {
+        esi::cli::write_stdout(diffs);
+        std::cerr << "esi-lint: " << fixed_findings << " fixable finding" << (fixed_findings == 1 ? "" : "s") << " in " << fixed_files
+                  << " file" << (fixed_files == 1 ? "" : "s") << "\n";
+        return failed ? exit_usage : fixed_findings ? exit_findings : exit_ok;
+    }
+    std::cerr << "esi-lint: fixed " << fixed_findings << " finding" << (fixed_findings == 1 ? "" : "s") << " in " << fixed_files << " file"
+              << (fixed_files == 1 ? "" : "s") << "\n";
+    if (failed) return exit_usage;
+    return std::nullopt;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -49,6 +93,8 @@ int main(int argc, char** argv) {
     bool list_rules = false;
     bool no_source = false;
     bool statistics = false;
+    bool fix = false;
+    bool show_diff = false;
     std::vector<std::string> exclude;
     std::string baseline_path;
     std::string write_baseline_path;
@@ -82,6 +128,8 @@ int main(int argc, char** argv) {
     app.add_option("--write-baseline", write_baseline_path, "write every finding of this run to a baseline file")
         ->type_name("FILE");
     app.add_flag("--statistics", statistics, "print the number of findings per rule and severity instead of the findings");
+    app.add_flag("--fix", fix, "apply the safe fixes (rules marked [*] in --list-rules) to the files, then report what is left");
+    app.add_flag("--diff", show_diff, "print the safe fixes as a unified diff instead of applying them");
     esi::cli::add_color_option(app, color, "text format output");
     esi::cli::add_version_flag(app, "esi-lint");
     if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
@@ -116,6 +164,10 @@ int main(int argc, char** argv) {
         std::cerr << "esi-lint: --statistics prints text or json\n";
         return exit_usage;
     }
+    if ((fix || show_diff) && std::find(paths.begin(), paths.end(), "-") != paths.end()) {
+        std::cerr << "esi-lint: --fix and --diff work on files, not on standard input\n";
+        return exit_usage;
+    }
     std::optional<esi::Baseline> baseline;
     if (!baseline_path.empty()) {
         std::string error;
@@ -141,6 +193,11 @@ int main(int argc, char** argv) {
         else files.emplace_back(p);
     }
     if (!files.empty()) report = esi::lint_paths(files, options);
+    if ((fix || show_diff) && !report.stopped_by_config) {
+        const std::optional<int> code = fix_files(report, options, show_diff);
+        if (code) return *code;  // --diff: the diff is the output
+        report = esi::lint_paths(files, options);  // what is left after fixing
+    }
     std::optional<std::string> bytes;
     if (use_stdin) {
         std::string error;

@@ -92,6 +92,9 @@ FileReport lint_input(LintInput read, const std::string& path, const EffectiveCo
     for (const auto& d : diagnostics)
         if (d.rule == "io-error") report.unreadable = true;
     if (read.document) diagnostics.append(run_rules(*read.document, config));
+    // The fixes address XML text; a YAML source's positions are not that.
+    if (!read.xml)
+        for (auto& d : diagnostics.items()) d.fix.reset();
     if (schemas && read.xml && read.source && read.document) diagnostics.append(schemas->validate(*read.source));
     apply_settings(diagnostics, config);
     if (read.source) {

@@ -155,6 +155,13 @@ std::string render_json(const LintReport& report) {
                 notes.push_back({{"path", n.path}, {"line", n.pos.line}, {"column", n.pos.column}, {"message", n.message}});
             item["notes"] = std::move(notes);
         }
+        if (d.fix) {
+            // Offsets into the file's decoded UTF-8 text, for an editor to apply (esi-lint --fix maps them to the bytes).
+            ordered_json edits = ordered_json::array();
+            for (const auto& e : d.fix->edits)
+                edits.push_back({{"offset", e.offset}, {"length", e.length}, {"replacement", e.replacement}});
+            item["fix"] = {{"description", d.fix->description}, {"edits", std::move(edits)}};
+        }
         diagnostics.push_back(std::move(item));
     });
     ordered_json skipped = ordered_json::array();
@@ -186,8 +193,9 @@ std::string render_rule_list_text() {
     std::string out;
     std::size_t width = 0;
     for (const Rule& r : all_rules()) width = std::max(width, r.id.size());
+    // Rules whose findings --fix can fix are marked [*], as ruff marks them.
     for (const Rule& r : all_rules())
-        out += fmt::format("{:<{}}  {:<7}  {}\n", r.id, width, to_string(r.default_severity), r.summary);
+        out += fmt::format("{:<{}}  {:<7}  {}{}\n", r.id, width, to_string(r.default_severity), r.fix.empty() ? "" : "[*] ", r.summary);
     return out;
 }
 
@@ -199,7 +207,8 @@ std::string render_rule_list_json() {
                          {"summary", r.summary},
                          {"rationale", r.rationale},
                          {"bad_example", r.bad_example},
-                         {"good_example", r.good_example}});
+                         {"good_example", r.good_example},
+                         {"fix", r.fix.empty() ? ordered_json() : ordered_json(r.fix)}});
     return ordered_json{{"rules", std::move(rules)}}.dump(2) + "\n";
 }
 
@@ -224,8 +233,10 @@ std::string render_rule_list_markdown() {
 std::string render_rule_explanation(std::string_view rule_id) {
     const Rule* r = find_rule(rule_id);
     if (!r) return {};
-    return fmt::format("{} ({})\n{}\n\n{}\n\nBad:\n  {}\n\nGood:\n  {}\n", r->id, to_string(r->default_severity), r->summary,
-                       r->rationale, r->bad_example, r->good_example);
+    std::string out = fmt::format("{} ({})\n{}\n\n{}\n\nBad:\n  {}\n\nGood:\n  {}\n", r->id, to_string(r->default_severity), r->summary,
+                                  r->rationale, r->bad_example, r->good_example);
+    if (!r->fix.empty()) out += fmt::format("\nFix (--fix): {}\n", r->fix);
+    return out;
 }
 
 }  // namespace esi
