@@ -144,6 +144,7 @@ TEST(SafeFix, UnifiedDiffShowsTheChangedLineWithContext) {
 
 TEST(SafeFix, UnifiedDiffAppliesWithPatch) {
     // The diff is what `patch` expects: applied to the original it gives the fixed file.
+    if (std::system("patch --version >/dev/null 2>&1") != 0) GTEST_SKIP() << "patch is not installed";
     std::string text = esi::test::read_text(esi::test::source_dir() / "samples" / "esi" / "example-digital-io.xml");
     std::string broken = text;
     for (std::size_t at = 0, n = 0; n < 5 && (at = broken.find(">#x", at)) != std::string::npos; ++n, at += 300)
