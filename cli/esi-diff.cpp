@@ -58,9 +58,9 @@ int run_tool(int argc, char** argv) {
     std::string format = "text";
     std::string fail_on = "breaking";
     std::string device;
-    app.add_option("OLD", old_path, "the old ESI file, or - for standard input (git show REV:dev.xml | esi-diff - dev.xml)")
+    app.add_option("OLD", old_path, "the old ESI file or YAML device source, or - for standard input (git show REV:dev.xml | esi-diff - dev.xml)")
         ->required();
-    app.add_option("NEW", new_path, "the new ESI file, or - for standard input")->required();
+    app.add_option("NEW", new_path, "the new ESI file or YAML device source, or - for standard input")->required();
     app.add_option("--format", format, "report format: text, json, markdown or html")
         ->check(CLI::IsMember({"text", "json", "markdown", "html"}));
     app.add_option("--fail-on", fail_on, "lowest class that makes the exit code 1: breaking, any or never")

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <iterator>
@@ -11,11 +12,15 @@
 #include "cli_common.hpp"
 #include "color_option.hpp"
 #include "esi/check/registry.hpp"
+#include "esi/io/atomic_write.hpp"
 #include "esi/io/read_file.hpp"
+#include "esi/lint/fix.hpp"
 #include "esi/lint/lint.hpp"
+#include "esi/report/baseline.hpp"
 #include "esi/report/gitlab.hpp"
 #include "esi/report/lint_output.hpp"
 #include "esi/report/sarif.hpp"
+#include "esi/report/statistics.hpp"
 #include "esi/version.hpp"
 #include "out_of_memory.hpp"
 
@@ -30,6 +35,48 @@ bool reaches(esi::Severity severity, const std::string& fail_on) {
     if (fail_on == "info") return true;
     if (fail_on == "warning") return severity != esi::Severity::info;
     return severity == esi::Severity::error;
+}
+
+// --fix and --diff on the files whose findings have fixes. --diff prints the diffs and gives the
+// exit code (1 when there is something to fix, as ruff does); --fix writes the files, reports what
+// it did on stderr and returns nullopt so that the files are linted again.
+std::optional<int> fix_files(const esi::LintReport& report, const esi::LintOptions& options, bool show_diff) {
+    std::size_t fixed_files = 0;
+    std::size_t fixed_findings = 0;
+    bool failed = false;
+    std::string diffs;
+    for (const auto& file : report.files) {
+        const bool fixable = std::any_of(file.diagnostics.begin(), file.diagnostics.end(), [](const esi::Diagnostic& d) { return d.fix.has_value(); });
+        if (!fixable) continue;
+        const esi::FixedText fixed = esi::fix_file(file.path, options);
+        if (!fixed.refused.empty()) {
+            std::cerr << file.path << ": note: not fixed: " << fixed.refused << "\n";
+            continue;
+        }
+        if (fixed.applied == 0) continue;
+        if (show_diff) {
+            diffs += esi::unified_diff(fixed.original, fixed.edits, file.path);
+        } else {
+            const esi::Diagnostics written = esi::write_fixed_file(file.path, fixed);
+            for (const auto& d : written) std::cerr << esi::format_diagnostic(d);
+            if (written.has_errors()) {
+                failed = true;
+                continue;
+            }
+        }
+        ++fixed_files;
+        fixed_findings += fixed.applied;
+    }
+    if (show_diff) {
+        esi::cli::write_stdout(diffs);
+        std::cerr << "esi-lint: " << fixed_findings << " fixable finding" << (fixed_findings == 1 ? "" : "s") << " in " << fixed_files
+                  << " file" << (fixed_files == 1 ? "" : "s") << "\n";
+        return failed ? exit_usage : fixed_findings ? exit_findings : exit_ok;
+    }
+    std::cerr << "esi-lint: fixed " << fixed_findings << " finding" << (fixed_findings == 1 ? "" : "s") << " in " << fixed_files << " file"
+              << (fixed_files == 1 ? "" : "s") << "\n";
+    if (failed) return exit_usage;
+    return std::nullopt;
 }
 
 }  // namespace
@@ -47,10 +94,17 @@ int run_tool(int argc, char** argv) {
     std::string explain;
     bool list_rules = false;
     bool no_source = false;
+    bool statistics = false;
+    bool fix = false;
+    bool show_diff = false;
+    std::vector<std::string> exclude;
+    std::string baseline_path;
+    std::string write_baseline_path;
     std::string color;
     unsigned jobs = 0;
     app.add_option("paths", paths,
-                   "ESI files, directories (recursive *.xml; hidden folders and CMake build trees skipped) or - for stdin");
+                   "ESI files, YAML device sources (*.yaml, *.yml), directories (recursive *.xml; hidden folders and CMake "
+                   "build trees skipped) or - for stdin");
     std::string sarif_help_base;
     app.add_option("--format", format,
                    "text, json, sarif, github (workflow annotations) or gitlab (Code Quality report); with --list-rules: text, "
@@ -67,6 +121,17 @@ int run_tool(int argc, char** argv) {
     app.add_option("--explain", explain, "print one rule's rationale with a bad and a good example");
     app.add_option("-j,--jobs", jobs, "files linted in parallel (default: all cores)");
     app.add_flag("--no-source", no_source, "text format: do not quote the source line");
+    app.add_option("--exclude", exclude,
+                   "glob of files a directory walk does not lint (relative to the current directory; repeatable; added to "
+                   "the config's exclude:)")
+        ->type_name("GLOB")
+        ->allow_extra_args(false);  // one glob per --exclude: the paths follow
+    app.add_option("--baseline", baseline_path, "do not report or count the findings this baseline file holds")->type_name("FILE");
+    app.add_option("--write-baseline", write_baseline_path, "write every finding of this run to a baseline file")
+        ->type_name("FILE");
+    app.add_flag("--statistics", statistics, "print the number of findings per rule and severity instead of the findings");
+    app.add_flag("--fix", fix, "apply the safe fixes (rules marked [*] in --list-rules) to the files, then report what is left");
+    app.add_flag("--diff", show_diff, "print the safe fixes as a unified diff instead of applying them");
     esi::cli::add_color_option(app, color, "text format output");
     esi::cli::add_version_flag(app, "esi-lint");
     if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
@@ -97,10 +162,30 @@ int run_tool(int argc, char** argv) {
         return exit_usage;
     }
 
+    if (statistics && format != "text" && format != "json") {
+        std::cerr << "esi-lint: --statistics prints text or json\n";
+        return exit_usage;
+    }
+    if ((fix || show_diff) && std::find(paths.begin(), paths.end(), "-") != paths.end()) {
+        std::cerr << "esi-lint: --fix and --diff work on files, not on standard input\n";
+        return exit_usage;
+    }
+    std::optional<esi::Baseline> baseline;
+    if (!baseline_path.empty()) {
+        std::string error;
+        const std::optional<std::string> text = esi::read_file_bytes(baseline_path, error);
+        if (text) baseline = esi::parse_baseline(*text, error);
+        if (!baseline) {
+            std::cerr << "esi-lint: --baseline " << baseline_path << ": " << error << "\n";
+            return exit_usage;
+        }
+    }
+
     esi::LintOptions options;
     if (!config.empty()) options.config_path = config;
     if (!xsd.empty()) options.xsd_dir = xsd;
     options.jobs = jobs;
+    options.exclude = exclude;
 
     esi::LintReport report;
     std::vector<std::filesystem::path> files;
@@ -110,6 +195,11 @@ int run_tool(int argc, char** argv) {
         else files.emplace_back(p);
     }
     if (!files.empty()) report = esi::lint_paths(files, options);
+    if ((fix || show_diff) && !report.stopped_by_config) {
+        const std::optional<int> code = fix_files(report, options, show_diff);
+        if (code) return *code;  // --diff: the diff is the output
+        report = esi::lint_paths(files, options);  // what is left after fixing
+    }
     std::optional<std::string> bytes;
     if (use_stdin) {
         std::string error;
@@ -126,18 +216,31 @@ int run_tool(int argc, char** argv) {
         std::optional<std::filesystem::path> config_path = options.config_path;
         if (!config_path) config_path = esi::find_config_for(std::filesystem::current_path() / "stdin.xml");
         esi::EffectiveConfig effective;
-        if (config_path) {
+        if (config_path && !report.stopped_by_config) {
             esi::ConfigResult loaded = esi::load_lint_config(*config_path);
             report.config_diagnostics.append(std::move(loaded.diagnostics));
             if (loaded.config) effective = esi::effective_config(*loaded.config, "stdin.xml");
+            else report.stopped_by_config = true;
         }
-        report.files.push_back(esi::lint_bytes(*bytes, "<stdin>", effective, options.xsd_dir));
+        if (!report.stopped_by_config) report.files.push_back(esi::lint_bytes(*bytes, "<stdin>", effective, options.xsd_dir));
     }
 
     std::error_code no_cwd;
     const std::filesystem::path source_root = std::filesystem::current_path(no_cwd);  // the checkout root in CI
+    if (!write_baseline_path.empty() && !report.stopped_by_config) {
+        const std::string text = esi::render_baseline(report, source_root);
+        const esi::Diagnostics written = esi::write_file_atomically(write_baseline_path, text);
+        for (const auto& d : written) std::cerr << esi::format_diagnostic(d);
+        if (written.has_errors()) return exit_usage;
+        // What was just written is the baseline of this run: the report shows what it left out.
+        std::string ignored;
+        baseline = esi::parse_baseline(text, ignored);
+    }
+    if (baseline) esi::apply_baseline(report, *baseline, source_root);
+
     std::string output;
-    if (format == "json") output = esi::render_json(report);
+    if (statistics) output = format == "json" ? esi::render_statistics_json(report) : esi::render_statistics_text(report);
+    else if (format == "json") output = esi::render_json(report);
     else if (format == "sarif")
         output = esi::render_sarif(report, {.tool_version = std::string(esi::version()),
                                             .source_root = source_root,
@@ -147,7 +250,7 @@ int run_tool(int argc, char** argv) {
     else output = esi::render_text(report, {.show_source = !no_source, .color = esi::cli::color_enabled(color, STDOUT_FILENO)});
     esi::cli::write_stdout(output);
 
-    if (report.any_unreadable() || report.config_diagnostics.has_errors()) return exit_usage;
+    if (report.any_unreadable() || report.config_diagnostics.has_errors() || report.stopped_by_config) return exit_usage;
     for (const auto& file : report.files)
         for (const auto& d : file.diagnostics)
             if (reaches(d.severity, fail_on)) return exit_findings;

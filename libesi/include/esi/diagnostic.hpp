@@ -2,6 +2,7 @@
 // Diagnostics are the library's error channel: every front end, pass and back end returns
 // them as values. Nothing in libesi prints or exits.
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,20 @@ struct DiagnosticNote {
     std::string message;
 };
 
+// A safe fix (ruff's term): the text that makes a finding go away is certain, so a tool may
+// apply it unasked (esi-lint --fix, an editor's quick fix). The edits address the file's decoded
+// UTF-8 text (esi/source_text.hpp) by byte offset; they do not overlap and come in order.
+struct TextEdit {
+    std::size_t offset = 0;
+    std::size_t length = 0;  // bytes replaced; 0 inserts
+    std::string replacement;
+};
+
+struct Fix {
+    std::string description;  // what the fix does, e.g. "write #x for 0x"
+    std::vector<TextEdit> edits;
+};
+
 struct Diagnostic {
     Severity severity = Severity::error;
     std::string rule;  // stable kebab-case id, e.g. "sm-direction-swapped"
@@ -40,6 +55,7 @@ struct Diagnostic {
     std::string path;  // file the position refers to; may be empty for stdin-less contexts
     SourcePos pos;
     std::vector<DiagnosticNote> notes;
+    std::optional<Fix> fix = std::nullopt;  // set by the rule (or front end) when the finding has a safe fix
 };
 
 // How every tool prints a diagnostic, in the layout of GCC and Clang that editors and CI log

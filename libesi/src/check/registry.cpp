@@ -73,4 +73,8 @@ void RuleContext::report(SourcePos pos, std::string message, std::vector<Diagnos
     d.notes = std::move(notes);
 }
 
+void RuleContext::report(SourcePos pos, std::string message, std::optional<Fix> fix) {
+    sink_.emplace(severity_, std::string(rule_.id), std::move(message), document_.path, pos).fix = std::move(fix);
+}
+
 }  // namespace esi

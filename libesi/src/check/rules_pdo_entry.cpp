@@ -7,6 +7,7 @@
 #include "check/pdo_entry_type.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/rule_cache.hpp"
+#include "check/source_edit.hpp"
 #include "esi/text_distance.hpp"
 
 namespace esi::rules {
@@ -83,10 +84,16 @@ void check_entry_type_spelling(const EsiDocument& document, RuleContext& context
         if (!type.present || type.standard_name.empty()) return;
         const std::string& text = *entry.data_type;
         const bool whole = type.nonstandard_name == trim(text);
+        // The whole DataType is the alias: its standard name is certain (a safe fix).
+        std::optional<Fix> fix;
+        if (whole && entry.data_type_pos.known())
+            fix = replace_element_text(document, entry.data_type_pos, trim(text), std::string(type.standard_name),
+                                       "write the standard type name");
         context.report(data_type_or_entry(entry), entry_label(entry) + " has DataType '" + text + "'" +
                                                       (whole ? ", which" : ": '" + std::string(type.nonstandard_name) + "'") +
                                                       " is not an ESI type name; the standard name is '" +
-                                                      std::string(type.standard_name) + "'");
+                                                      std::string(type.standard_name) + "'",
+                       std::move(fix));
     });
 }
 
@@ -105,6 +112,7 @@ constexpr Rule pdo_entry_type_spelling{
     .bad_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT16</DataType></Entry>",
     .good_example = "<Entry><Index>#x6041</Index><BitLen>16</BitLen><DataType>UINT</DataType></Entry>",
     .check = check_entry_type_spelling,
+    .fix = "writes the standard name (UINT for UINT16) when the whole DataType is the alias",
 };
 
 // ---- pdo-entry-bitlen-type ------------------------------------------------------------------

@@ -43,6 +43,7 @@ constexpr Rule xml_number_format{
         "is read differently by every master, or not at all (ETG.2000 schema, HexDecValue).",
     .bad_example = "<Index>#x0x607F</Index>",
     .good_example = "<Index>#x607F</Index>",
+    .fix = "#x0x… (both hex prefixes) becomes #x… when hex digits follow; other spellings are left alone",
 };
 
 constexpr Rule xml_hex_prefix{
@@ -57,6 +58,7 @@ constexpr Rule xml_hex_prefix{
         "(`#x0x607F`) is xml-number-format's error.",
     .bad_example = "<Id>0xF3F</Id>",
     .good_example = "<Id>#xF3F</Id>",
+    .fix = "writes #x for the 0x prefix",
 };
 
 constexpr Rule xml_boolean_format{

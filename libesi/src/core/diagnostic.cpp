@@ -124,7 +124,7 @@ void Diagnostics::add(Diagnostic diagnostic) {
 }
 
 Diagnostic& Diagnostics::emplace(Severity severity, std::string rule, std::string message, std::string path, SourcePos pos) {
-    items_.push_back(Diagnostic{severity, std::move(rule), bounded_message(std::move(message)), std::move(path), pos, {}});
+    items_.push_back(Diagnostic{severity, std::move(rule), bounded_message(std::move(message)), std::move(path), pos, {}, {}});
     return items_.back();
 }
 

@@ -12,6 +12,8 @@
 
 #include "diff/compare.hpp"
 #include "esi/diff/classification.hpp"
+#include "esi/io/read_file.hpp"
+#include "esi/load/document.hpp"
 #include "esi/xml/reader.hpp"
 
 namespace esi {
@@ -454,17 +456,35 @@ FileDiff diff_sources(DiffSource old_source, DiffSource new_source, const DiffOp
     FileDiff out;
     out.old_path = old_source.path.string();
     out.new_path = new_source.path.string();
-    ReadOptions read_options;
-    read_options.keep_source = false;
+    // Either side may be an ESI file or a YAML device source (two revisions of a source, or a
+    // source against the ESI file generated from it); the load layer tells them apart.
     const auto read = [&](DiffSource& source) {
-        return source.bytes ? read_esi_owned(std::move(*source.bytes), source.path.string(), read_options)
-                            : read_esi_file(source.path, read_options);
+        const std::string ext = source.path.extension().string();
+        if (!source.bytes && (ext == ".yaml" || ext == ".yml")) return load_document_file(source.path);
+        LoadedDocument loaded;
+        if (!source.bytes) {
+            std::string error;
+            source.bytes = read_file_bytes(source.path, error);
+            if (!source.bytes) {
+                loaded.diagnostics.emplace(Severity::error, "io-error", "cannot read file: " + error, source.path.string(), {});
+                return loaded;
+            }
+        }
+        if (document_format(*source.bytes, source.path) == DocumentFormat::yaml_source)
+            return load_document(std::move(*source.bytes), source.path.string());
+        // ESI files are read without keeping their text: a diff quotes no lines, and catalogues are big.
+        ReadOptions read_options;
+        read_options.keep_source = false;
+        ReadResult r = read_esi_owned(std::move(*source.bytes), source.path.string(), read_options);
+        loaded.document = std::move(r.document);
+        loaded.diagnostics = std::move(r.diagnostics);
+        return loaded;
     };
-    ReadResult a = read(old_source);
-    ReadResult b = read(new_source);
+    LoadedDocument a = read(old_source);
+    LoadedDocument b = read(new_source);
     bool ok = true;
-    for (ReadResult* r : {&a, &b}) {
-        const bool unusable = !r->document || r->document->kind == DocumentKind::unknown;
+    for (LoadedDocument* r : {&a, &b}) {
+        const bool unusable = !r->usable() || r->document->kind == DocumentKind::unknown;
         if (!unusable) continue;
         ok = false;
         for (auto& d : r->diagnostics)

@@ -94,7 +94,7 @@ void read_config_file(const std::filesystem::path& path, LintConfig& config, Dia
     // A syntax error has been reported; an empty file configures nothing.
     if (!tree || tree->root()->kind == yaml::TreeNode::Kind::null) return;
     ConfigParser parser(path.string(), diagnostics);
-    static constexpr std::string_view keys[] = {"extends", "rules", "limits", "overrides"};
+    static constexpr std::string_view keys[] = {"extends", "rules", "limits", "overrides", "exclude"};
     const auto root = parser.reader().mapping(Node(tree->root()), keys, "the config");
     if (!root) return;
     if (const Node* n = root->find("extends")) {
@@ -106,6 +106,11 @@ void read_config_file(const std::filesystem::path& path, LintConfig& config, Dia
     if (const Node* n = root->find("rules"))
         for (const auto& [id, setting] : parser.rules(*n)) config.rules[id] = setting;
     if (const Node* n = root->find("limits")) config.limits.merge(yaml::read_limits(parser.reader(), *n));
+    if (const Node* n = root->find("exclude")) {
+        std::error_code ec;
+        const std::filesystem::path base = std::filesystem::absolute(path, ec).parent_path();
+        for (std::string& glob : parser.strings(*n, "exclude")) config.exclude.push_back({base, std::move(glob)});
+    }
     if (const Node* n = root->find("overrides")) {
         static constexpr std::string_view override_keys[] = {"files", "product_codes", "rules", "limits"};
         if (const auto items = parser.reader().sequence(*n, "overrides")) {
@@ -146,6 +151,22 @@ bool glob_matches(const std::string& pattern, const std::filesystem::path& relat
 }
 
 }  // namespace
+
+bool exclude_matches(const ExcludeGlob& exclude, const std::filesystem::path& file) {
+    std::error_code ec;
+    const std::filesystem::path relative =
+        std::filesystem::absolute(file, ec).lexically_normal().lexically_relative(exclude.base.lexically_normal());
+    if (relative.empty() || *relative.begin() == "..") return false;
+    std::string glob = exclude.glob;
+    while (glob.size() > 1 && glob.back() == '/') glob.pop_back();  // "legacy/" names the directory
+    if (glob.starts_with("./")) glob.erase(0, 2);
+    std::filesystem::path prefix;
+    for (const auto& part : relative) {
+        prefix /= part;
+        if (glob_matches(glob, prefix)) return true;
+    }
+    return false;
+}
 
 ConfigResult load_lint_config(const std::filesystem::path& path) {
     ConfigResult result;

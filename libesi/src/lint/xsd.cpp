@@ -5,6 +5,7 @@
 #include <libxml/uri.h>
 #include <libxml/xmlschemas.h>
 
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <mutex>
@@ -19,6 +20,14 @@ struct SchemaSet::Impl {
     xmlSchemaPtr module = nullptr;
     xmlSchemaPtr dict = nullptr;
     std::filesystem::path dir;
+    std::set<std::string> present;  // the schema files that exist in dir (compiled or not)
+    // Why a schema is not there to validate with: the two need different fixes.
+    [[nodiscard]] std::string why_unusable(const std::string& file) const {
+        if (!present.count(file))
+            return "the file is missing (give the directory of the ETG schema files: EtherCATInfo.xsd, EtherCATBase.xsd …)";
+        return "the file is there but does not compile (a schema file it includes is missing or broken; see the xml-schema "
+               "messages about it)";
+    }
     ~Impl() {
         for (xmlSchemaPtr s : {info, module, dict})
             if (s) xmlSchemaFree(s);
@@ -41,6 +50,7 @@ struct LibxmlScope {
     std::string path;                 // what the messages are about when libxml2 names no file
     std::optional<fs::path> allowed;  // canonical directory files may be loaded from; none: nothing
     std::set<std::string> refused;    // each refused location is reported once
+    const SourceText* source = nullptr;  // the instance validated, to find an element's column
 };
 
 thread_local LibxmlScope* active_scope = nullptr;
@@ -91,10 +101,40 @@ xmlParserInputPtr guarded_loader(const char* url, const char* id, xmlParserCtxtP
     return nullptr;
 }
 
+// One line: libxml2 ends messages with a newline and breaks some inside (a list of expected
+// elements), and the GitHub and GitLab formats take a raw newline for the end of a finding.
 std::string trimmed(const char* text) {
-    std::string message = text ? text : "";
-    while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+    std::string message;
+    bool space = false;
+    for (const char* c = text; c && *c; ++c) {
+        if (*c == '\n' || *c == '\r' || *c == '\t' || *c == ' ') {
+            space = !message.empty();
+            continue;
+        }
+        if (space) message.push_back(' ');
+        space = false;
+        message.push_back(*c);
+    }
     return message;
+}
+
+// The column of the element libxml2 names on its line: validation errors carry only a line, so
+// the column is where "<name" starts on that line (the first such tag, 1 when none is found).
+std::uint32_t column_of(const LibxmlScope& scope, const xmlError& error, std::uint32_t line) {
+    if (error.int2 > 0) return static_cast<std::uint32_t>(error.int2);  // the parser's own column
+    if (!scope.source || line == 0 || line > scope.source->line_count()) return 1;
+    const auto* node = static_cast<const xmlNode*>(error.node);
+    if (!node || node->type != XML_ELEMENT_NODE || !node->name) return 1;
+    const std::string_view text = scope.source->line(line);
+    const std::string name = reinterpret_cast<const char*>(node->name);
+    for (std::size_t at = text.find('<'); at != std::string_view::npos; at = text.find('<', at + 1)) {
+        std::string_view rest = text.substr(at + 1);
+        if (const auto colon = rest.find(':'); colon != std::string_view::npos && colon < rest.find_first_of(" \t/>"))
+            rest.remove_prefix(colon + 1);  // a namespace prefix
+        if (rest.starts_with(name) && (rest.size() == name.size() || std::string_view(" \t/>").find(rest[name.size()]) != std::string_view::npos))
+            return scope.source->code_points(scope.source->line_start(line), scope.source->line_start(line) + at) + 1;
+    }
+    return 1;
 }
 
 void structured_error(void* user, xmlErrorPtr error) {
@@ -106,7 +146,9 @@ void structured_error(void* user, xmlErrorPtr error) {
     const std::string file = error->file ? error->file : scope->path;
     const Severity severity = error->level == XML_ERR_WARNING ? Severity::warning : Severity::error;
     const auto line = static_cast<std::uint32_t>(error->line > 0 ? error->line : 0);
-    scope->diagnostics->emplace(severity, "xml-schema", message, file, SourcePos{line, line > 0 ? 1u : 0u});
+    const bool in_instance = !error->file || file == scope->path;
+    const std::uint32_t column = line == 0 ? 0 : in_instance ? column_of(*scope, *error, line) : static_cast<std::uint32_t>(std::max(error->int2, 1));
+    scope->diagnostics->emplace(severity, "xml-schema", message, file, SourcePos{line, column});
 }
 
 // Messages libxml2 writes outside the structured channel (some I/O and loader warnings).
@@ -160,9 +202,10 @@ void initialise_libxml() {
     });
 }
 
-xmlSchemaPtr load_schema(const fs::path& file, LibxmlScope& scope) {
+xmlSchemaPtr load_schema(const fs::path& file, LibxmlScope& scope, std::set<std::string>* set_present) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) return nullptr;
+    if (set_present) set_present->insert(file.filename().string());
     scope.path = file.string();
     xmlSchemaParserCtxtPtr parser = xmlSchemaNewParserCtxt(file.c_str());
     if (!parser) return nullptr;
@@ -213,12 +256,13 @@ std::shared_ptr<SchemaSet> SchemaSet::load(const std::filesystem::path& dir, Dia
     if (ec) scope.allowed.reset();
     {
         const ScopeGuard guard(scope);
-        set->impl_->info = load_schema(dir / "EtherCATInfo.xsd", scope);
-        set->impl_->module = load_schema(dir / "EtherCATModule.xsd", scope);
-        set->impl_->dict = load_schema(dir / "EtherCATDict.xsd", scope);
+        set->impl_->info = load_schema(dir / "EtherCATInfo.xsd", scope, &set->impl_->present);
+        set->impl_->module = load_schema(dir / "EtherCATModule.xsd", scope, &set->impl_->present);
+        set->impl_->dict = load_schema(dir / "EtherCATDict.xsd", scope, &set->impl_->present);
     }
     if (!set->impl_->info)
-        diagnostics.emplace(Severity::error, "io-error", "no usable EtherCATInfo.xsd in " + dir.string(), dir.string(), {});
+        diagnostics.emplace(Severity::error, "io-error", "no usable EtherCATInfo.xsd in " + dir.string() + ": " + set->impl_->why_unusable("EtherCATInfo.xsd"),
+                            dir.string(), {});
     diagnostics.append(std::move(problems));
     return set;
 }
@@ -228,6 +272,7 @@ Diagnostics SchemaSet::validate(const SourceText& source) const {
     LibxmlScope scope;  // allows no loading at all: the instance needs nothing from outside
     scope.diagnostics = &out;
     scope.path = source.path();
+    scope.source = &source;
     const ScopeGuard guard(scope);
     // The text is already UTF-8; tell libxml2 so, whatever the declaration says. Nothing is
     // loaded (NONET, no DTD loading, no entity substitution); messages come through the handlers.
@@ -262,7 +307,7 @@ Diagnostics SchemaSet::validate(const SourceText& source) const {
     const SourcePos root_pos{static_cast<std::uint32_t>(root ? xmlGetLineNo(root) : 0), root ? 1u : 0u};
     if (!schema) {
         not_validated(out, source.path(), root_pos,
-                      schema_file ? std::string("no usable ") + schema_file + " in " + impl_->dir.string()
+                      schema_file ? std::string("no usable ") + schema_file + " in " + impl_->dir.string() + ": " + impl_->why_unusable(schema_file)
                                   : "the ETG schemas describe no root element '" + excerpt(root_name) + "'");
     } else if (const xmlNodePtr reference = first_entity_reference(root)) {
         const auto line = static_cast<std::uint32_t>(xmlGetLineNo(reference));

@@ -74,13 +74,24 @@ QuotedLine quoted_window(std::string_view line, std::uint32_t column) {
     return out;
 }
 
+std::size_t skipped_files(const LintReport& report) {
+    return static_cast<std::size_t>(
+        std::count_if(report.files.begin(), report.files.end(), [](const FileReport& f) { return !f.skipped.empty(); }));
+}
+
 std::string summary_line(const LintReport& report) {
+    if (report.stopped_by_config) return "no file linted: the configuration has errors (see above)\n";
     const std::size_t errors = report.count(Severity::error);
     const std::size_t warnings = report.count(Severity::warning);
     const std::size_t infos = report.count(Severity::info);
+    const std::size_t skipped = skipped_files(report);
     auto plural = [](std::size_t n, std::string_view word) { return fmt::format("{} {}{}", n, word, n == 1 ? "" : "s"); };
-    return fmt::format("{}, {}, {} in {}\n", plural(errors, "error"), plural(warnings, "warning"), plural(infos, "info"),
-                       plural(report.files.size(), "file"));
+    std::string aside;
+    if (skipped) aside += fmt::format("{} not ESI, skipped", skipped);
+    if (report.excluded) aside += fmt::format("{}{} excluded", aside.empty() ? "" : "; ", report.excluded);
+    if (report.baselined) aside += fmt::format("{}{} in the baseline", aside.empty() ? "" : "; ", plural(report.baselined, "finding"));
+    return fmt::format("{}, {}, {} in {}{}\n", plural(errors, "error"), plural(warnings, "warning"), plural(infos, "info"),
+                       plural(report.files.size() - skipped, "file"), aside.empty() ? "" : " (" + aside + ")");
 }
 
 std::string github_escape_data(std::string_view s) {
@@ -122,6 +133,9 @@ std::string render_text(const LintReport& report, const TextOutputOptions& optio
         }
         for (const auto& note : d.notes) out += format_note_line(note, style);
     });
+    for (const auto& file : report.files)
+        if (!file.skipped.empty())
+            out += format_note_line(DiagnosticNote{file.path, {}, "skipped: " + file.skipped}, style);
     out += summary_line(report);
     return out;
 }
@@ -141,11 +155,22 @@ std::string render_json(const LintReport& report) {
                 notes.push_back({{"path", n.path}, {"line", n.pos.line}, {"column", n.pos.column}, {"message", n.message}});
             item["notes"] = std::move(notes);
         }
+        if (d.fix) {
+            // Offsets into the file's decoded UTF-8 text, for an editor to apply (esi-lint --fix maps them to the bytes).
+            ordered_json edits = ordered_json::array();
+            for (const auto& e : d.fix->edits)
+                edits.push_back({{"offset", e.offset}, {"length", e.length}, {"replacement", e.replacement}});
+            item["fix"] = {{"description", d.fix->description}, {"edits", std::move(edits)}};
+        }
         diagnostics.push_back(std::move(item));
     });
+    ordered_json skipped = ordered_json::array();
+    for (const auto& file : report.files)
+        if (!file.skipped.empty()) skipped.push_back({{"path", file.path}, {"reason", file.skipped}});
     ordered_json root{{"diagnostics", std::move(diagnostics)},
+                      {"skipped", std::move(skipped)},
                       {"summary",
-                       {{"files", report.files.size()},
+                       {{"files", report.files.size() - skipped_files(report)},
                         {"errors", report.count(Severity::error)},
                         {"warnings", report.count(Severity::warning)},
                         {"infos", report.count(Severity::info)}}}};
@@ -168,8 +193,9 @@ std::string render_rule_list_text() {
     std::string out;
     std::size_t width = 0;
     for (const Rule& r : all_rules()) width = std::max(width, r.id.size());
+    // Rules whose findings --fix can fix are marked [*], as ruff marks them.
     for (const Rule& r : all_rules())
-        out += fmt::format("{:<{}}  {:<7}  {}\n", r.id, width, to_string(r.default_severity), r.summary);
+        out += fmt::format("{:<{}}  {:<7}  {}{}\n", r.id, width, to_string(r.default_severity), r.fix.empty() ? "" : "[*] ", r.summary);
     return out;
 }
 
@@ -181,7 +207,8 @@ std::string render_rule_list_json() {
                          {"summary", r.summary},
                          {"rationale", r.rationale},
                          {"bad_example", r.bad_example},
-                         {"good_example", r.good_example}});
+                         {"good_example", r.good_example},
+                         {"fix", r.fix.empty() ? ordered_json() : ordered_json(r.fix)}});
     return ordered_json{{"rules", std::move(rules)}}.dump(2) + "\n";
 }
 
@@ -206,8 +233,10 @@ std::string render_rule_list_markdown() {
 std::string render_rule_explanation(std::string_view rule_id) {
     const Rule* r = find_rule(rule_id);
     if (!r) return {};
-    return fmt::format("{} ({})\n{}\n\n{}\n\nBad:\n  {}\n\nGood:\n  {}\n", r->id, to_string(r->default_severity), r->summary,
-                       r->rationale, r->bad_example, r->good_example);
+    std::string out = fmt::format("{} ({})\n{}\n\n{}\n\nBad:\n  {}\n\nGood:\n  {}\n", r->id, to_string(r->default_severity), r->summary,
+                                  r->rationale, r->bad_example, r->good_example);
+    if (!r->fix.empty()) out += fmt::format("\nFix (--fix): {}\n", r->fix);
+    return out;
 }
 
 }  // namespace esi

@@ -99,6 +99,8 @@ std::string render_sarif(const LintReport& report, const SarifOptions& options) 
         notifications.push_back(std::move(n));
     };
     for (const auto& d : report.config_diagnostics) notify(d);
+    for (const auto& file : report.files)
+        if (!file.skipped.empty()) notify(Diagnostic{Severity::info, "skipped", "skipped: " + file.skipped, file.path, {}, {}, {}});
 
     ordered_json results = ordered_json::array();
     report_detail::Fingerprints fingerprints;

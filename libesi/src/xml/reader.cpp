@@ -16,6 +16,7 @@
 
 #include "esi/encoding.hpp"
 #include "xml/reader_context.hpp"
+#include "esi/xml/foreign_root.hpp"
 #include "esi/xml/well_formed.hpp"
 #include "esi/xml/xinclude.hpp"
 
@@ -100,10 +101,17 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
         for_children(root, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(doc.root_extras, c, previous); });
     } else {
         doc.kind = DocumentKind::unknown;
-        report(Severity::error, "xml-unknown-root",
-               "root element <" + std::string(name) +
-                   "> is not an ESI root (EtherCATInfo, EtherCATInfoList, EtherCATModule, EtherCATDict or EtherCATDiag)",
-               doc.root_pos);
+        const std::string_view local = name.substr(name.find(':') == std::string_view::npos ? 0 : name.find(':') + 1);
+        if (const std::optional<ForeignDocument> foreign = recognise_foreign_root(local))
+            report(Severity::error, "xml-unknown-root",
+                   "not an ESI file (" + std::string(foreign->what) + ", root element <" + std::string(name) +
+                       ">); ESI files describe devices and start with EtherCATInfo",
+                   doc.root_pos);
+        else
+            report(Severity::error, "xml-unknown-root",
+                   "root element <" + std::string(name) +
+                       "> is not an ESI root (EtherCATInfo, EtherCATInfoList, EtherCATModule, EtherCATDict or EtherCATDiag)",
+                   doc.root_pos);
     }
     return doc;
 }

@@ -9,8 +9,10 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cctype>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <pugixml.hpp>
 #include <string>
 #include <string_view>
@@ -62,8 +64,33 @@ private:
         return at >= begin && at < begin + buffer_.size() ? at - begin : npos;
     }
 
-    void report(Severity severity, std::string rule, std::string message, SourcePos pos) {
-        diagnostics_.emplace(severity, std::move(rule), std::move(message), source_.path(), pos);
+    Diagnostic& report(Severity severity, std::string rule, std::string message, SourcePos pos) {
+        return diagnostics_.emplace(severity, std::move(rule), std::move(message), source_.path(), pos);
+    }
+    // A safe fix replacing `length` bytes at `at`, a pointer into a value parsed in place; none
+    // when the text there is no longer what the file holds (pugixml unescapes values in place, so
+    // text after an entity reference has moved).
+    std::optional<Fix> fix_at(const char* at, std::size_t length, std::string replacement, std::string description) const {
+        const std::size_t offset = offset_of(at);
+        if (offset == npos || offset + length > source_.text().size()) return std::nullopt;
+        if (source_.text().compare(offset, length, at, length) != 0) return std::nullopt;
+        return Fix{std::move(description), {TextEdit{offset, length, std::move(replacement)}}};
+    }
+    // The safe fixes of a hex number's spelling: 0x… → #x… (xml-hex-prefix) and #x0x… → #x…
+    // (xml-number-format, only when hex digits follow, so that the result reads).
+    std::optional<Fix> hex_prefix_fix(std::string_view text) const {
+        const std::string_view t = trim(text);
+        const std::size_t sign = !t.empty() && (t[0] == '+' || t[0] == '-') ? 1 : 0;
+        if (t.size() > sign + 2 && t[sign] == '0' && (t[sign + 1] == 'x' || t[sign + 1] == 'X'))
+            return fix_at(t.data() + sign, 2, "#x", "write #x for 0x");
+        return std::nullopt;
+    }
+    std::optional<Fix> double_prefix_fix(std::string_view text) const {
+        const std::string_view t = trim(text);
+        if (t.size() <= 4 || t[0] != '#' || t[1] != 'x' || t[2] != '0' || (t[3] != 'x' && t[3] != 'X')) return std::nullopt;
+        for (const char c : t.substr(4))
+            if (!std::isxdigit(static_cast<unsigned char>(c))) return std::nullopt;
+        return fix_at(t.data() + 2, 2, "", "drop the second hex prefix");
     }
 
     // ---- scalar values -------------------------------------------------------------------
@@ -98,13 +125,15 @@ private:
                        // The reason only where it adds to "not a number" (not "(not a number)").
                        (parsed.error == NumberError::bad_digit ? std::string() : " (" + std::string(to_string(parsed.error)) + ")") +
                        "; ESI numbers are decimal or #x hex",
-                   pos_of(site.element));
+                   pos_of(site.element))
+                .fix = double_prefix_fix(text);
             return std::nullopt;
         }
         if (parsed.syntax == NumberSyntax::c_hex) {
             report(Severity::warning, "xml-hex-prefix",
                    describe(site) + ": '" + excerpt(trim(text)) + "' uses the C prefix 0x; ESI hex numbers are written #x",
-                   pos_of(site.element));
+                   pos_of(site.element))
+                .fix = hex_prefix_fix(text);
         }
         return parsed.value;
     }

@@ -3,6 +3,7 @@
 // check over the model. Rules never print; they report through a RuleContext.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,8 @@ struct Rule {
     std::string_view good_example;
     // Null for rules whose diagnostics come from a front end (xml-syntax …) or another stage.
     CheckFunction check = nullptr;
+    // What esi-lint --fix does to the rule's findings (Diagnostic::fix); empty: no safe fix.
+    std::string_view fix = {};
 };
 
 // What a rule sees while it runs: the document, the limits that apply, and a way to report.
@@ -53,6 +56,8 @@ public:
     [[nodiscard]] rules::RuleCache& cache();
 
     void report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes = {});
+    // A finding with a safe fix (esi-lint --fix); `fix` absent reports it without one.
+    void report(SourcePos pos, std::string message, std::optional<Fix> fix);
     // A note pointing at another place in the same file.
     [[nodiscard]] DiagnosticNote note(SourcePos pos, std::string message) const {
         return DiagnosticNote{document_.path, pos, std::move(message)};

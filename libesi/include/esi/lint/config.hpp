@@ -4,6 +4,7 @@
 //   extends: [profiles/servo.yaml]      # relative to this file; later entries win
 //   rules: { sm-size-zero: off, pdo-entry-bitlen: error }
 //   limits: { max_pdos: {rx: 4, tx: 4}, max_entries_per_pdo: 6, bitlen: [8, 16, 32] }
+//   exclude: ["vendor/*", "*.eni.xml"]   # files a directory walk does not lint
 //   overrides:
 //     - files: ["legacy/*.xml"]          # globs against the path relative to this file
 //       product_codes: [0x264860d2]      # optional: limits apply to these devices only
@@ -28,11 +29,19 @@ struct ConfigOverride {
     Limits limits;
 };
 
+// A glob and the directory it is relative to (the config file that states it: an extended
+// profile's globs stay relative to the profile).
+struct ExcludeGlob {
+    std::filesystem::path base;
+    std::string glob;
+};
+
 struct LintConfig {
     std::filesystem::path path;  // where it was read from; empty for the built-in default
     std::map<std::string, RuleSetting, std::less<>> rules;
     Limits limits;
     std::vector<ConfigOverride> overrides;
+    std::vector<ExcludeGlob> exclude;
 };
 
 struct ConfigResult {
@@ -46,6 +55,11 @@ struct ConfigResult {
 
 // The nearest .esi-lint.yaml in the file's directory or above; nullopt when there is none.
 [[nodiscard]] std::optional<std::filesystem::path> find_config_for(const std::filesystem::path& file);
+
+// Whether a glob (the syntax of `files:` in overrides) matches the file or one of the directories
+// it lies in, with paths relative to `base`: `legacy` and `legacy/*` both exclude legacy/a.xml and
+// legacy/old/b.xml; a glob without '/' matches a name anywhere, as in .gitignore.
+[[nodiscard]] bool exclude_matches(const ExcludeGlob& exclude, const std::filesystem::path& file);
 
 [[nodiscard]] EffectiveConfig effective_config(const LintConfig& config, const std::filesystem::path& file);
 

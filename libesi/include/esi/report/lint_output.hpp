@@ -15,7 +15,9 @@ struct TextOutputOptions {
 };
 
 [[nodiscard]] std::string render_text(const LintReport& report, const TextOutputOptions& options = {});
-// {"diagnostics":[{path,line,column,severity,rule,message,notes?}],"summary":{files,errors,warnings,infos}}
+// {"diagnostics":[{path,line,column,severity,rule,message,notes?,fix?}],"skipped":[{path,reason}],
+//  "summary":{files,errors,warnings,infos}}; fix: {description, edits:[{offset,length,replacement}]},
+// offsets into the file's decoded UTF-8 text.
 [[nodiscard]] std::string render_json(const LintReport& report);
 [[nodiscard]] std::string render_github(const LintReport& report);
 
