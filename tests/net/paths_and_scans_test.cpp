@@ -62,6 +62,17 @@ TEST(PathsAndScans, APositionTwiceIsRefused) {
     EXPECT_NE(errors.find("scan.txt:19:"), std::string::npos) << errors;
 }
 
+TEST(PathsAndScans, ABlockHeaderWhoseNumbersDoNotFit32BitsIsRefusedNotWrapped) {
+    // sscanf's %u read master 4294967296 as master 0 and "#x" made the header an ordinary line,
+    // so that block's identity overwrote the one before it.
+    for (const std::string header : {"=== Master 4294967296, Slave 1 ===", "=== Master #x, Slave 1 ===", "=== Master 0, Slave -1 ==="}) {
+        std::string text = block(0) + block(1);
+        text.replace(text.find("=== Master 0, Slave 1 ==="), 25, header);
+        const std::string errors = scan_errors(text);
+        EXPECT_NE(errors.find("scan.txt:10:"), std::string::npos) << header << "\n" << errors;
+    }
+}
+
 TEST(PathsAndScans, ACutLastBlockIsRefused) {
     std::string text = block(0) + block(1);
     text.resize(text.find("Product code", text.find("Slave 1")) + 22);  // "Product code:    0x000" and no more

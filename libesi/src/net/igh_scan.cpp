@@ -3,6 +3,7 @@
 #include "esi/net/igh_scan.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <fmt/format.h>
 
@@ -26,6 +27,22 @@ std::optional<std::string_view> field(std::string_view line, std::string_view ke
     const std::string_view t = trim(line);
     if (!t.starts_with(key) || t.size() <= key.size() || t[key.size()] != ':') return std::nullopt;
     return trim(t.substr(key.size() + 1));
+}
+
+// "=== Master m, Slave n ===": m and n decimal and within 32 bits (sscanf's %u would wrap
+// 4294967296 to 0 and take "-1" for 4294967295).
+bool block_header(std::string_view line, std::uint32_t& master, std::uint32_t& slave) {
+    auto number = [](std::string_view& rest, std::uint32_t& out) {
+        const auto [end, ec] = std::from_chars(rest.data(), rest.data() + rest.size(), out);
+        if (ec != std::errc{} || end == rest.data()) return false;
+        rest.remove_prefix(static_cast<std::size_t>(end - rest.data()));
+        return true;
+    };
+    std::string_view rest = line.substr(std::string_view("=== Master ").size());
+    if (!number(rest, master) || !rest.starts_with(", Slave ")) return false;
+    rest.remove_prefix(std::string_view(", Slave ").size());
+    if (!number(rest, slave)) return false;
+    return trim(rest) == "===";
 }
 
 // Outside text (a device name from the bus, a Type text from an ESI) goes into a comment only
@@ -67,10 +84,19 @@ IghScan parse_igh_slaves(std::string_view text, const std::string& path) {
         text.remove_prefix(nl == std::string_view::npos ? text.size() : nl + 1);
         ++line_number;
         if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-        unsigned master = 0, slave = 0;
+        std::uint32_t master = 0, slave = 0;
         if (line.starts_with("=== Master ")) {
-            const std::string l(line);
-            if (std::sscanf(l.c_str(), "=== Master %u, Slave %u ===", &master, &slave) == 2) {
+            if (!block_header(line, master, slave)) {
+                // Taken for an ordinary line, its block's Identity lines would overwrite the
+                // block before it.
+                scan.diagnostics.emplace(Severity::error, "net-scan",
+                                         fmt::format("'{}' is not a block header '=== Master m, Slave n ===' (m, n: 32-bit decimal)",
+                                                     excerpt(line)),
+                                         path, SourcePos{line_number, 1});
+                finish();
+                continue;
+            }
+            {
                 finish();
                 if (!first_master) first_master = master;
                 if (master == *first_master) {
