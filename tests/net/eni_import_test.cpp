@@ -58,17 +58,19 @@ std::string join(const std::vector<std::string>& lines) {
 }
 
 // Imports `file`, builds the network and compares every written slave with the export's.
-void round_trip(const std::string& file, std::size_t expected_slaves, const std::vector<Exception>& exceptions = {}) {
+void round_trip(const std::string& file, std::size_t expected_slaves, const std::vector<Exception>& exceptions = {},
+                const esi::net::LibraryIndex* library = nullptr) {
     SCOPED_TRACE(file);
     const std::string text = esi::test::read_text(esi::test::corpus_dir() / "eni" / file);
     esi::net::EniImportOptions options;
     options.omit_unknown = true;
-    const esi::net::EniImport imported = esi::net::network_from_eni(text, file, esi::test::corpus_index(), options);
+    const esi::net::EniImport imported =
+        esi::net::network_from_eni(text, file, library ? *library : esi::test::corpus_index(), options);
     ASSERT_FALSE(imported.yaml.empty()) << esi::test::diagnostics_text(imported.diagnostics);
     EXPECT_EQ(imported.written.size(), expected_slaves) << imported.yaml;
     const esi::net::NetworkFileResult read = esi::net::read_network_text(imported.yaml, "imported.yaml");
     ASSERT_TRUE(read.spec) << esi::test::diagnostics_text(read.diagnostics) << imported.yaml;
-    const esi::net::BuildResult built = esi::net::build_network(*read.spec, esi::test::corpus_index());
+    const esi::net::BuildResult built = esi::net::build_network(*read.spec, library ? *library : esi::test::corpus_index());
     ASSERT_TRUE(built.network) << esi::test::diagnostics_text(built.diagnostics) << imported.yaml;
     const esi::test::EniFile ours = esi::test::read_eni(esi::net::write_eni(*built.network));
     const esi::test::EniFile theirs = esi::test::read_eni(text);
@@ -103,7 +105,22 @@ TEST(EniImport, EcEngineerElmoDrives) {
 
 TEST(EniImport, TwinCatCherryEcatModularDrive) {
     ESI_REQUIRE_CORPUS();
-    round_trip("cherry-embedded__CherryECAT__ECAT_CIA402_ENI.xml", 1);
+    const std::string file = "cherry-embedded__CherryECAT__ECAT_CIA402_ENI.xml";
+    // The corpus holds several files for this drive's identity that configure it differently:
+    // against the whole library the import refuses to choose for the user ...
+    const std::string text = esi::test::read_text(esi::test::corpus_dir() / "eni" / file);
+    esi::net::EniImportOptions options;
+    options.omit_unknown = true;
+    const esi::net::EniImport refused = esi::net::network_from_eni(text, file, esi::test::corpus_index(), options);
+    EXPECT_TRUE(refused.yaml.empty());
+    EXPECT_NE(esi::test::diagnostics_text(refused.diagnostics).find("net-device-duplicate"), std::string::npos)
+        << esi::test::diagnostics_text(refused.diagnostics);
+    // ... and with the library narrowed to the file the user means (--esi FILE) it round-trips.
+    const esi::net::IndexOptions index_options;  // no cache_dir: no cache
+    const esi::net::IndexResult narrowed =
+        esi::net::build_library_index({esi::test::corpus_dir() / "esi" / "HPMicro__ECAT_CIA402__hpm_sdk__2024-09.xml"}, index_options);
+    ASSERT_FALSE(narrowed.diagnostics.has_errors()) << esi::test::diagnostics_text(narrowed.diagnostics);
+    round_trip(file, 1, {}, &narrowed.index);
 }
 
 TEST(EniImport, TwinCatEmptyNetwork) {

@@ -14,6 +14,7 @@
 #include "esi/io/read_file.hpp"
 #include "esi/load/document.hpp"
 #include "esi/net/resolve.hpp"
+#include "esi/plural.hpp"
 #include "esi/sii/check.hpp"
 #include "esi/sii/decode.hpp"
 #include "slave_context.hpp"
@@ -66,7 +67,7 @@ public:
                         fmt::format("SM{} has control byte 0x{:02X}; the ESI says 0x{:02X}", sm.number, sm.control, it->control_byte));
             if (sm.length && it->is_process_data() && *sm.length != it->length)
                 finding(configured_, "check-sm", sm.pos,
-                        fmt::format("SM{} is {} bytes long; the configuration makes it {}", sm.number, *sm.length, it->length));
+                        fmt::format("SM{} is {} long; the configuration makes it {}", sm.number, esi::counted(*sm.length, "byte"), it->length));
             if (!bus_.has_mapping) continue;
             std::vector<std::uint32_t> bus_pdos, our_pdos;
             for (const BusPdo& p : sm.pdos) bus_pdos.push_back(p.index);
@@ -154,7 +155,7 @@ CheckResult check_bus(const std::vector<BusSlave>& bus, const std::vector<SiiDum
                                     fmt::format("the bus has {}; the network has '{}' ({}) here", identity_text(b.vendor_id, b.product_code, b.revision),
                                                 expected->name, identity_text(expected->vendor_id, expected->product_code, expected->revision)));
             } else {
-                checker.finding(Severity::error, "check-identity", {}, fmt::format("the network has {} slaves; this one is not in it", network->slaves.size()));
+                checker.finding(Severity::error, "check-identity", {}, fmt::format("the network has {}; this one is not in it", esi::counted(network->slaves.size(), "slave")));
             }
         }
         if (b.vendor_id && b.product_code) {

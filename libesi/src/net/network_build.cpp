@@ -10,6 +10,7 @@
 #include "esi/load/document.hpp"
 #include "esi/net/network.hpp"
 #include "esi/net/resolve.hpp"
+#include "esi/plural.hpp"
 #include "slave_context.hpp"
 
 namespace esi::net {
@@ -137,17 +138,17 @@ bool same_configuration(const NetworkSpec& spec, const SlaveSpec& ss, std::size_
     };
     if (different.empty()) {
         Diagnostic& d = diagnostics.emplace(Severity::info, "net-device-duplicate",
-                                            fmt::format("{} is described by {} files that configure it alike; taken from {} (the first in "
+                                            fmt::format("{} is described by {} that configure it alike; taken from {} (the first in "
                                                         "the order of 'esi:' and --esi)",
-                                                        describe_identity(first), candidates.size(), index.file_of(first).path),
+                                                        describe_identity(first), esi::counted(candidates.size(), "file"), index.file_of(first).path),
                                             spec.path, ss.device_pos);
         for (std::size_t c = 1; c < candidates.size(); ++c) d.notes.push_back(note(candidates[c], "also described here"));
         return true;
     }
     Diagnostic& d = diagnostics.emplace(Severity::error, "net-device-duplicate",
-                                        fmt::format("{} is described by {} files that configure it differently; pick one with "
+                                        fmt::format("{} is described by {} that configure it differently; pick one with "
                                                     "'esi_file:'",
-                                                    describe_identity(first), candidates.size()),
+                                                    describe_identity(first), esi::counted(candidates.size(), "file")),
                                         spec.path, ss.device_pos);
     d.notes.push_back(note(&first, "first in the order of 'esi:' and --esi"));
     for (const IndexedDevice* c : different) d.notes.push_back(note(c, "configures it differently"));
@@ -166,8 +167,8 @@ BuildResult build_network(const NetworkSpec& spec, const LibraryIndex& index) {
     DocumentStore store;
     if (spec.slaves.size() > max_network_slaves) {
         diagnostics.emplace(Severity::error, "net-too-many-slaves",
-                            fmt::format("{} slaves; an EtherCAT segment addresses at most {} (station addresses 1001 to 65535)",
-                                        spec.slaves.size(), max_network_slaves),
+                            fmt::format("{}; an EtherCAT segment addresses at most {} (station addresses 1001 to 65535)",
+                                        esi::counted(spec.slaves.size(), "slave"), max_network_slaves),
                             spec.path, spec.slaves[max_network_slaves].pos);
         return result;
     }

@@ -8,6 +8,7 @@
 //    object indices are 16 bits and sub-indices 8, SM registers 16 bits (start, length) and
 //    an 8-bit control byte.
 
+#include "esi/plural.hpp"
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -67,7 +68,7 @@ void check_representable(SlaveContext& c) {
     for (const ConfiguredPdo& p : s.pdos) {
         if (p.index > 0xFFFF) refuse({}, fmt::format("PDO index {:#x} does not fit in 16 bits", p.index));
         if (p.entries.size() > 255)
-            refuse({}, fmt::format("PDO {} has {} entries; a PDO mapping holds at most 255", hex_index(p.index), p.entries.size()));
+            refuse({}, fmt::format("PDO {} has {}; a PDO mapping holds at most 255", hex_index(p.index), esi::counted(p.entries.size(), "entry", "entries")));
         if (p.sm < pdos_per_sm.size() && ++pdos_per_sm[p.sm] == 256)
             refuse({}, fmt::format("SM{} is assigned more than 255 PDOs; an assignment object holds at most 255", p.sm));
         for (const ConfiguredEntry& e : p.entries) {
@@ -75,8 +76,8 @@ void check_representable(SlaveContext& c) {
                 refuse({}, fmt::format("PDO {}: entry {:#x}:{:#x} is not a 16-bit index and 8-bit sub-index", hex_index(p.index), e.index,
                                        e.subindex));
             if (e.bit_len == 0 || e.bit_len > 255)
-                refuse({}, fmt::format("PDO {}: entry {}:{:02X} is {} bits long; a PDO mapping entry has 1 to 255 bits",
-                                       hex_index(p.index), hex_index(e.index), e.subindex, e.bit_len));
+                refuse({}, fmt::format("PDO {}: entry {}:{:02X} is {} long; a PDO mapping entry has 1 to 255 bits",
+                                       hex_index(p.index), hex_index(e.index), e.subindex, esi::counted(e.bit_len, "bit")));
         }
     }
     for (std::size_t i = 0; i < c.device.sms.size(); ++i) {

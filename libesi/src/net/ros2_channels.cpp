@@ -20,6 +20,7 @@
 #include <set>
 
 #include "esi/data_types.hpp"
+#include "esi/plural.hpp"
 #include "slave_context.hpp"
 
 namespace esi::net {
@@ -131,8 +132,8 @@ Ros2Plan plan_ros2_slave(const NetworkSlave& s, const std::string& network_path)
                 structural("net-ros2-layout", "its ESI gives a PDO without an index (a pre-ETG.2000 catalogue's PDO reference); "
                                               "name a revision from a current catalogue");
             if (sm_of[dir] && *sm_of[dir] != sm.number)
-                structural("net-ros2-layout", fmt::format("its {} PDOs sit on SM{} and SM{}; ethercat_driver_ros2 assigns all {} to one SM",
-                                                          dir == 0 ? "Rx" : "Tx", *sm_of[dir], sm.number, dir == 0 ? "rpdo" : "tpdo"));
+                structural("net-ros2-layout", fmt::format("its {} sit on SM{} and SM{}; ethercat_driver_ros2 assigns all {} to one SM",
+                                                          dir == 0 ? "RxPDOs" : "TxPDOs", *sm_of[dir], sm.number, dir == 0 ? "rpdo" : "tpdo"));
             sm_of[dir] = sm.number;
             Ros2Pdo out;
             out.pdo = &p;
@@ -143,8 +144,8 @@ Ros2Plan plan_ros2_slave(const NetworkSlave& s, const std::string& network_path)
                 const std::uint32_t in_byte = bit % 8;
                 bit += e.bit_len;
                 if (e.bit_len > 255) {
-                    structural("net-ros2-layout", fmt::format("entry {}:{:02X} has {} bits; the driver's channel length is 8 bits wide",
-                                                              hex_index(e.index), e.subindex, e.bit_len));
+                    structural("net-ros2-layout", fmt::format("entry {}:{:02X} has {}; the driver's channel length is 8 bits wide",
+                                                              hex_index(e.index), e.subindex, esi::counted(e.bit_len, "bit")));
                     continue;
                 }
                 if (e.is_padding()) {

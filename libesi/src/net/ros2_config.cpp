@@ -18,6 +18,7 @@
 #include <cmath>
 
 #include "esi/net/ros2_config.hpp"
+#include "esi/plural.hpp"
 #include "ros2_channels.hpp"
 #include "slave_context.hpp"
 #include "yaml_scalar.hpp"
@@ -72,7 +73,7 @@ std::optional<std::string> sdo_entry(const CoeCommand& c, std::string& why) {
     }
     const std::size_t n = c.data.size();
     if (n != 1 && n != 2 && n != 4 && n != 8) {
-        why = fmt::format("{} bytes", n);
+        why = esi::counted(n, "byte");
         return std::nullopt;
     }
     std::uint64_t raw = 0;

@@ -8,6 +8,7 @@
 #include "esi/load/document.hpp"
 #include "esi/net/network.hpp"
 #include "esi/net/network_spec.hpp"
+#include "esi/plural.hpp"
 #include "esi/sii/build.hpp"
 #include "slotted_device.hpp"
 
@@ -85,7 +86,7 @@ LineResult line_from_source(const std::filesystem::path& source, const SourceOpt
     if (devices.size() > 1) {
         Diagnostic& d = result.diagnostics.emplace(
             Severity::error, "sim-device",
-            fmt::format("the file describes {} devices: choose one with --device PRODUCTCODE[:REVISION]", devices.size()),
+            fmt::format("the file describes {}: choose one with --device PRODUCTCODE[:REVISION]", esi::counted(devices.size(), "device")),
             path, {});
         for (const Device* device : devices) d.notes.push_back({path, device->pos, identity_text(*device)});
         return result;
