@@ -109,7 +109,12 @@ PageTotals check_in_browser(const std::string& browser, const std::vector<Page>&
         EXPECT_TRUE(f["dc_bare_factors"].empty()) << f["dc_bare_factors"].dump();
         if (pages[i].path.filename() == "index.html") {
             EXPECT_EQ(f["title"].get<std::string>().find(".xml"), std::string::npos) << f["title"];
-            EXPECT_EQ(f["h1"], f["title"]);
+            // The title holds the same text, inside a first-strong isolate (U+2068 … U+2069): a
+            // <title> cannot hold <bdi>.
+            std::string title = f["title"].get<std::string>();
+            for (const std::string mark : {"\u2068", "\u2069"})
+                for (std::size_t at = title.find(mark); at != std::string::npos; at = title.find(mark)) title.erase(at, mark.size());
+            EXPECT_EQ(f["h1"].get<std::string>(), title);
         }
         totals.enum_texts += f["enum_texts"].get<int>();
         totals.hex_cells += f["hex_cells"].get<int>();
