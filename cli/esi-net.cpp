@@ -225,29 +225,9 @@ int run_check(const CheckInputs& in, const std::vector<std::string>& esi, bool n
         return true;
     };
     if (!read(in.soem, esi::net::parse_soem_slaveinfo) || !read(in.igh_pdos, esi::net::parse_igh_pdos)) return exit_usage;
-    if (!in.igh_slaves.empty()) {
-        std::string error;
-        const std::optional<std::string> text = esi::read_file_bytes(in.igh_slaves, error);
-        if (!text) {
-            std::cerr << "esi-net check: " << in.igh_slaves << ": " << error << "\n";
-            return exit_usage;
-        }
-        const esi::net::IghScan scan = esi::net::parse_igh_slaves(*text, in.igh_slaves);
-        read_problems.append(scan.diagnostics);
-        std::vector<esi::net::BusSlave> slaves;
-        for (const esi::net::ScannedSlave& s : scan.slaves) {
-            esi::net::BusSlave b;
-            b.position = s.position;
-            b.vendor_id = s.vendor_id;
-            b.product_code = s.product_code;
-            b.revision = s.revision;
-            b.name = s.device_name;
-            b.source = in.igh_slaves;
-            b.pos = s.pos;
-            slaves.push_back(std::move(b));
-        }
-        dumps.insert(dumps.begin(), std::move(slaves));  // identities first
-    }
+    // Identities first: the other dumps add SMs, FMMUs and PDOs to the slaves they name.
+    if (!read(in.igh_slaves, esi::net::parse_igh_slaves_dump)) return exit_usage;
+    if (!in.igh_slaves.empty()) std::rotate(dumps.begin(), dumps.end() - 1, dumps.end());
     std::vector<esi::net::SiiDump> sii;
     for (const std::string& arg : in.sii) {
         const std::size_t eq = arg.find('=');

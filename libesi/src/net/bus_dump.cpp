@@ -11,6 +11,7 @@
 //   [0x0000.0] 0x7000:0x01 0x01 BOOLEAN      Output
 
 #include "esi/net/bus_dump.hpp"
+#include "esi/net/igh_scan.hpp"
 
 #include <cstdlib>
 #include <cctype>
@@ -237,6 +238,24 @@ BusDump parse_soem_slaveinfo(std::string_view text, const std::string& path) {
             pdo->entries.push_back(e);
         }
     });
+    return dump;
+}
+
+BusDump parse_igh_slaves_dump(std::string_view text, const std::string& path) {
+    IghScan scan = parse_igh_slaves(text, path);
+    BusDump dump;
+    dump.diagnostics = std::move(scan.diagnostics);
+    for (const ScannedSlave& s : scan.slaves) {
+        BusSlave b;
+        b.position = s.position;
+        b.vendor_id = s.vendor_id;
+        b.product_code = s.product_code;
+        b.revision = s.revision;
+        b.name = s.device_name;
+        b.source = path;
+        b.pos = s.pos;
+        dump.slaves.push_back(std::move(b));
+    }
     return dump;
 }
 

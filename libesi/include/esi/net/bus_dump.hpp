@@ -71,5 +71,7 @@ struct BusDump {
 [[nodiscard]] BusDump parse_igh_pdos(std::string_view text, const std::string& path);
 // SOEM's slaveinfo output (`-map` for the PDOs).
 [[nodiscard]] BusDump parse_soem_slaveinfo(std::string_view text, const std::string& path);
+// IgH `ethercat slaves -v`: the identities only (the scan reader of `init --from-igh`).
+[[nodiscard]] BusDump parse_igh_slaves_dump(std::string_view text, const std::string& path);
 
 }  // namespace esi::net
