@@ -57,4 +57,22 @@ TEST(EsiNetRound2Cli, CheckReportsTextAndJson) {
     EXPECT_EQ(esi::test::run({tool, "check", "--sii", "x", "--esi", esi}).exit_code, 2);  // not POSITION=FILE
 }
 
+TEST(EsiNetRound2Cli, CheckTakesIghSlaveListsAsIdentities) {
+    ESI_REQUIRE_CORPUS();
+    // A real `ethercat slaves -v` of a 20-slave bus (lcec_configgen's canned input): every slave
+    // becomes a bus slave with its identity, in bus order; a device the corpus lacks is a finding.
+    const std::string tool = esi::test::tool("esi-net").string();
+    const std::string slaves = (esi::test::corpus_dir() / "master-configs" / "lcec" /
+                                "lcec__configgen__canned_realbus_slaves.txt").string();
+    const auto r = esi::test::run({tool, "--no-cache", "check", "--igh-slaves", slaves, "--esi", (esi::test::corpus_dir() / "esi").string(),
+                                   "--format", "json"});
+    ASSERT_EQ(r.exit_code, 1) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    ASSERT_EQ(j["slaves"].size(), 20u);
+    for (std::size_t i = 0; i < 20; ++i) EXPECT_EQ(j["slaves"][i]["position"], i);
+    EXPECT_EQ(j["slaves"][0]["vendor_id"], 17185);  // 0x4321, an LS Mecapion L7EC drive
+    EXPECT_EQ(j["slaves"][0]["product_code"], 180);
+    EXPECT_TRUE(j["slaves"][0]["esi"].is_null());
+}
+
 }  // namespace
