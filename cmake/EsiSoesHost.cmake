@@ -19,10 +19,11 @@ if(TARGET esi_soem)
     set(soes_master_path $<TARGET_FILE:esi_soes_master>)
 endif()
 if(TARGET sim_soes_tests)
-    # The firmware is compiled with the tree's C compiler: in the sanitizer tree (ESI_SANITIZE) the
-    # host carries that compiler's AddressSanitizer runtime, and an instrumented firmware must
-    # match it.
-    if(ESI_SANITIZE)
+    # The firmware is compiled with the tree's C compiler: in an instrumented tree (ESI_SANITIZE, or
+    # ESI_BUILD_FUZZERS, whose whole tree runs under ASan + UBSan) the host carries that
+    # compiler's AddressSanitizer runtime, and an instrumented firmware must match it; preloading
+    # a second runtime would make ASan refuse to start.
+    if(ESI_SANITIZE OR ESI_BUILD_FUZZERS)
         set(host_sanitized 1)
     else()
         set(host_sanitized 0)
