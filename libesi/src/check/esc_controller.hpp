@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "esi/check/rule.hpp"
 #include "esi/model/device.hpp"
 
 namespace esi::rules {
@@ -22,5 +24,19 @@ struct BlockLimit {
 // How many register blocks of a kind the ESC has: Info/EtherCATController/<element> (SmCount,
 // FmmuCount) where given and readable, else the register map's 16. `what` names the blocks.
 [[nodiscard]] BlockLimit block_limit(const Device& device, std::string_view element, std::string_view what);
+
+// Reports the first of `blocks` (a device's Sm or Fmmu elements) past what the ESC has (sm-count,
+// fmmu-count): `element` is the EtherCATController count, `what` names the blocks in the message
+// ("SyncManagers"), `prefix` numbers them ("SM").
+template <typename Block>
+void report_blocks_past_limit(const Device& device, const std::vector<Block>& blocks, std::string_view element, std::string_view what,
+                              std::string_view prefix, RuleContext& context) {
+    const BlockLimit limit = block_limit(device, element, what);
+    if (blocks.size() <= limit.count) return;
+    context.report(blocks[limit.count].pos, "the device describes " + std::to_string(blocks.size()) + " " + std::string(what) + ", " +
+                                                std::string(prefix) + std::to_string(limit.count) +
+                                                " and above are more than the ESC has (" + limit.because +
+                                                "); the master cannot configure them");
+}
 
 }  // namespace esi::rules

@@ -167,14 +167,8 @@ constexpr Rule fmmu_missing{
 // ---- fmmu-count -------------------------------------------------------------------------------
 
 void check_fmmu_count(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
-        const BlockLimit limit = block_limit(*device, "FmmuCount", "FMMUs");
-        if (device->fmmus.size() <= limit.count) continue;
-        const Fmmu& first_extra = device->fmmus[limit.count];
-        context.report(first_extra.pos, "the device describes " + std::to_string(device->fmmus.size()) + " FMMUs, FMMU" +
-                                            std::to_string(limit.count) + " and above are more than the ESC has (" +
-                                            limit.because + "); the master cannot configure them");
-    }
+    for (const Device* device : all_devices(document))
+        report_blocks_past_limit(*device, device->fmmus, "FmmuCount", "FMMUs", "FMMU", context);
 }
 
 constexpr Rule fmmu_count{

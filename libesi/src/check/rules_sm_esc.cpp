@@ -143,14 +143,8 @@ constexpr Rule sm_address_area{
 // ---- sm-count ---------------------------------------------------------------------------------
 
 void check_sm_count(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
-        const BlockLimit limit = block_limit(*device, "SmCount", "SyncManagers");
-        if (device->sms.size() <= limit.count) continue;
-        const SyncManager& first_extra = device->sms[limit.count];
-        context.report(first_extra.pos, "the device describes " + std::to_string(device->sms.size()) + " SyncManagers, SM" +
-                                            std::to_string(limit.count) + " and above are more than the ESC has (" +
-                                            limit.because + "); the master cannot configure them");
-    }
+    for (const Device* device : all_devices(document))
+        report_blocks_past_limit(*device, device->sms, "SmCount", "SyncManagers", "SM", context);
 }
 
 constexpr Rule sm_count{
