@@ -11,6 +11,7 @@
 #include <chrono>
 #include <map>
 #include <random>
+#include <set>
 
 #include "esi/io/atomic_write.hpp"
 #include "esi/xml/reader.hpp"
@@ -175,6 +176,7 @@ TEST(NothingLost, SigkillingEsiGenLeavesEveryFileOldOrNew) {
     std::mt19937 random(6);
     std::uniform_int_distribution<long> delay(0, duration.count() * 3 / 2);
     int killed = 0, partly_new = 0;
+    std::set<std::filesystem::path> leftover_dirs;  // where a killed run left a temporary name
     for (int round = 0; round < 30; ++round) {
         const auto out = dir / ("run" + std::to_string(round));
         const auto old = seed_old_outputs(out, fresh);
@@ -199,7 +201,18 @@ TEST(NothingLost, SigkillingEsiGenLeavesEveryFileOldOrNew) {
                 EXPECT_EQ(content, "");
                 continue;
             }
+            // The previous file of a target keeps a second name until the whole set is in place
+            // (to roll back a rename failing part-way); a SIGKILL leaves it, whole.
+            const auto previous = name.find(".tmp");
+            if (name.size() > 9 && name.substr(name.size() - 9) == ".previous" && previous != std::string::npos) {
+                const std::string target = name.substr(1, previous - 1);
+                EXPECT_TRUE(old.count(target) && content == old.at(target))
+                    << "round " << round << ": " << name << " is not the previous " << target;
+                leftover_dirs.insert(out);
+                continue;
+            }
             // Only a complete copy may carry a temporary name (named just before its rename).
+            if (name.find(".tmp") != std::string::npos) leftover_dirs.insert(out);
             const bool complete_copy = std::any_of(fresh.begin(), fresh.end(), [&](const auto& f) { return f.second == content; });
             EXPECT_TRUE(complete_copy && name.find(".tmp") != std::string::npos)
                 << "round " << round << ": " << name << " is neither the old nor the new file (" << content.size() << " bytes)";
@@ -207,8 +220,16 @@ TEST(NothingLost, SigkillingEsiGenLeavesEveryFileOldOrNew) {
         if (new_files > 0 && new_files < static_cast<int>(fresh.size())) ++partly_new;
     }
     std::cout << "[          ] " << killed << " of 30 esi-gen runs killed; " << partly_new
-              << " killed while renaming (some files new, the others old, none half-written)\n";
+              << " killed while renaming (some files new, the others old, none half-written); "
+              << leftover_dirs.size() << " left temporary names\n";
     EXPECT_GT(killed, 0);
+    // The next run into a directory removes what a killed run left there.
+    for (const auto& out : leftover_dirs) {
+        ASSERT_EQ(run_child({gen_tool(), sample_path(), "-o", out.string()}).exit_code, 0);
+        for (const auto& file : esi::test::snapshot(out))
+            EXPECT_TRUE(fresh.count(file.first) || file.first.rfind(".esi-output.lock", 0) == 0)
+                << out << ": " << file.first << " stayed after the next run";
+    }
 }
 
 TEST(NothingLost, EsiGenUnderAFileSizeLimitWritesNothing) {

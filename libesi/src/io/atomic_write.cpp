@@ -3,12 +3,14 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <optional>
 #include <random>
 #include <set>
+#include <string_view>
 
 #include "io/created_directories.hpp"
 #include "io/directory_lock.hpp"
@@ -193,6 +195,39 @@ void drop(Backup& backup) {
     backup.leftover.release();
 }
 
+// Whether `name` is one of the names this file gives beside `target`: ".NAME.tmpDIGITS" (a
+// complete new copy, named just before its rename) or the same with ".previous" (the kept
+// previous file of a set).
+bool is_temporary_name_of(const std::string& name, const std::filesystem::path& target) {
+    const std::string prefix = "." + target.filename().string() + ".tmp";
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) return false;
+    std::string_view rest(name);
+    rest.remove_prefix(prefix.size());
+    if (rest.size() > 9 && rest.substr(rest.size() - 9) == ".previous") rest.remove_suffix(9);
+    return !rest.empty() && std::all_of(rest.begin(), rest.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// A run killed by SIGKILL cannot remove what it named: a complete copy about to be renamed, or
+// the second name of a previous file. The next run into the same directory, holding its lock
+// (so no other run is writing there), removes those names of its own targets.
+void remove_leftovers_of_killed_runs(const std::vector<OutputFile>& files) {
+    std::set<std::filesystem::path> directories;
+    for (const auto& file : files) directories.insert(directory_of(file.path));
+    for (const auto& directory : directories) {
+        std::error_code ec;
+        std::vector<std::filesystem::path> leftovers;
+        for (std::filesystem::directory_iterator it(directory, ec), end; !ec && it != end; it.increment(ec)) {
+            const std::string name = it->path().filename().string();
+            for (const auto& file : files)
+                if (directory_of(file.path) == directory && is_temporary_name_of(name, file.path)) {
+                    leftovers.push_back(it->path());
+                    break;
+                }
+        }
+        for (const auto& leftover : leftovers) ::unlink(leftover.c_str());
+    }
+}
+
 }  // namespace
 
 Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
@@ -232,8 +267,11 @@ Diagnostics write_files_atomically(const std::vector<OutputFile>& files) {
     // second name (a hard link) until the whole set is in place, so that a rename failing
     // part-way (an immutable file, a full directory) rolls back what was already renamed and
     // the previous set stays whole.
+    // One file to replace needs no second name: its rename either happens or not. (A SIGKILL
+    // cannot be caught, so every second name made is one a killed run leaves behind.)
     std::vector<Backup> backups(files.size());
-    for (std::size_t i = 0; i < files.size(); ++i)
+    const auto to_replace = std::count(unchanged.begin(), unchanged.end(), false);
+    for (std::size_t i = 0; i < files.size() && to_replace > 1; ++i)
         if (!unchanged[i]) keep_previous(files[i].path, backups[i]);
     std::set<std::filesystem::path> directories;
     for (std::size_t i = 0; i < files.size(); ++i) {
@@ -273,6 +311,7 @@ Diagnostics write_output_set(const std::filesystem::path& root, const std::vecto
         created.remove();
         return diagnostics;
     }
+    remove_leftovers_of_killed_runs(files);
     diagnostics = write_files_atomically(files);
     if (diagnostics.has_errors()) {
         lock.reset();  // removes the lock file, so that a root this run created is empty again

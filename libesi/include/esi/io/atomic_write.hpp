@@ -27,7 +27,8 @@ struct OutputFile {
 // The same for one run's set of outputs under `root` (a tool's -o directory): the set is written
 // under an exclusive lock on `root` (a lock file inside it), so two runs into one directory take
 // turns and the files both write all come from one of them; a failed run also removes `root`
-// when it created it.
+// when it created it. Holding the lock, it first removes what a run killed by SIGKILL left of
+// these targets (a complete copy under its temporary name, a previous file's second name).
 [[nodiscard]] Diagnostics write_output_set(const std::filesystem::path& root, const std::vector<OutputFile>& files);
 
 [[nodiscard]] Diagnostics write_file_atomically(const std::filesystem::path& path, const std::string& content);
