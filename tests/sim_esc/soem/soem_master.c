@@ -7,7 +7,10 @@
  * --echo   checks that each slave's inputs repeat its outputs of the cycle before (esi-sim --echo)
  * --dc     configures distributed clocks (ecx_configdc) before SAFEOP
  * --sdo    reads every object the slaves list over SDO Information, each sub-index by ecx_SDOread,
- *          in SAFEOP (before the process data has changed any object)
+ *          in SAFEOP (before the process data has changed any object); prints the descriptions
+ *          ecx_readODlist, ecx_readODdescription and ecx_readOE got ("od"). Only slaves whose SII
+ *          declares SDO Information (CoE details bit 1): SOEM 2.x crashes on the mailbox error a
+ *          slave without it answers (docs/esi-sim.md, "SOEM and SDO Information")
  * --init POS:INDEX:SUB:CA:HEX  an SDO download in PREOP->SAFEOP before the mapping is read (an ENI's
  *          CoE InitCmds for transition PS; POS is the slave's 0-based position, CA 1 for complete access)
  * --scan-only  stops after ecx_config_init (and reports the ESC's EEPROM and PDI state)
@@ -131,9 +134,10 @@ static void print_slaves(void)
              slave->state, slave->ALstatuscode);
       print_string(ec_ALstatuscode2string(slave->ALstatuscode));
       printf(",\"eeprom_status\":%u,\"eeprom_checksum_error\":%s,\"eeprom_not_loaded\":%s,\"dl_status\":%u,"
-             "\"pdi_operational\":%s,\"has_dc\":%s,\"mbx_protocols\":%u}",
+             "\"pdi_operational\":%s,\"has_dc\":%s,\"mbx_protocols\":%u,\"coe_details\":%u}",
              eeprom_status, (eeprom_status & 0x0800) ? "true" : "false", (eeprom_status & 0x1000) ? "true" : "false",
-             dl_status, (dl_status & 1) ? "true" : "false", slave->hasdc ? "true" : "false", slave->mbx_proto);
+             dl_status, (dl_status & 1) ? "true" : "false", slave->hasdc ? "true" : "false", slave->mbx_proto,
+             slave->CoEdetails);
    }
    printf("]");
 }
@@ -150,11 +154,15 @@ static void read_dictionaries(void)
    static ec_ODlistt od;
    static ec_OElistt oe;
    static uint8 value[4096];
+   /* What SDO Information described, printed after the reads (one array per key). */
+   static char descriptions[1 << 20];
+   size_t used = 0;
    printf(",\"sdo\":[");
    int first = 1;
    for (int s = 1; s <= context.slavecount; ++s)
    {
       if (!(context.slavelist[s].mbx_proto & ECT_MBXPROT_COE)) continue;
+      if (!(context.slavelist[s].CoEdetails & ECT_COEDET_SDOINFO)) continue;
       memset(&od, 0, sizeof od);
       if (ecx_readODlist(&context, (uint16)s, &od) <= 0) continue;
       for (int i = 0; i < od.Entries; ++i)
@@ -162,6 +170,15 @@ static void read_dictionaries(void)
          ecx_readODdescription(&context, (uint16)i, &od);
          memset(&oe, 0, sizeof oe);
          ecx_readOE(&context, (uint16)i, &od, &oe);
+         used += (size_t)snprintf(descriptions + used, sizeof descriptions - used,
+                                  "%s{\"slave\":%d,\"index\":%u,\"data_type\":%u,\"object_code\":%u,\"max_sub\":%u,\"entries\":[",
+                                  used ? "," : "", s - 1, od.Index[i], od.DataType[i], od.ObjectCode[i], od.MaxSub[i]);
+         for (int sub = 0; sub <= od.MaxSub[i] && sub < EC_MAXOELIST && used < sizeof descriptions; ++sub)
+            used += (size_t)snprintf(descriptions + used, sizeof descriptions - used,
+                                     "%s{\"sub\":%d,\"data_type\":%u,\"bit_length\":%u,\"access\":%u}", sub ? "," : "", sub,
+                                     oe.DataType[sub], oe.BitLength[sub], oe.ObjAccess[sub]);
+         if (used < sizeof descriptions) used += (size_t)snprintf(descriptions + used, sizeof descriptions - used, "]}");
+         if (used >= sizeof descriptions) used = sizeof descriptions - 1;
          for (int sub = 0; sub <= od.MaxSub[i] && sub < EC_MAXOELIST; ++sub)
          {
             if (sub > 0 && oe.DataType[sub] == 0 && oe.BitLength[sub] == 0) continue;
@@ -181,7 +198,7 @@ static void read_dictionaries(void)
          ecx_poperror(&context, &error);
       }
    }
-   printf("]");
+   printf("],\"od\":[%s]", descriptions);
 }
 
 int main(int argc, char **argv)
