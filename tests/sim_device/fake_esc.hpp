@@ -28,6 +28,7 @@ public:
             }
             out[i] = a >= 0x0220 && a < 0x0224 ? static_cast<std::uint8_t>(event_ >> (8 * (a - 0x0220))) : memory_[a];
             if (a == 0x0120) event_ &= ~1u;
+            if (a == 0x0440) event_ &= ~0x40u;  // reading the watchdog status acknowledges its expiry
             on_pdi_access(a, false);
         }
     }
@@ -44,6 +45,14 @@ public:
         }
     }
     [[nodiscard]] std::uint32_t al_event() const override { return event_; }
+
+    // The process-data watchdog as the ESC runs it: expired (0x0440 bit 0 clear, AL event bit 6)
+    // or rewound by the master's outputs (bit 0 set).
+    void expire_watchdog() {
+        memory_[0x0440] &= 0xFE;
+        event_ |= 0x40u;
+    }
+    void rewind_watchdog() { memory_[0x0440] |= 0x01; }
 
     // --- EtherCAT side (the test as master) ---
     void master_write(std::uint16_t address, std::span<const std::uint8_t> in) {

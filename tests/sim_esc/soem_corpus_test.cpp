@@ -58,21 +58,37 @@ const CorpusDevice corpus_devices[] = {
     {"NationalInstruments__NI9144__dls-ethercat.xml", "#x23B8", "2", "modular chassis"},
 };
 
-// Devices that do not reach OP, and why (an ESI defect or something the emulator leaves out).
+// Devices that do not reach OP: the AL status code the firmware refuses with, and why. Each is
+// an inconsistency of the ESI that a device built from it would show as well.
 // The label is the one the test prints: FILE PRODUCTCODE:REVISION (KIND).
-const std::map<std::string, std::string> known_not_op = {
+struct Refusal {
+    unsigned al_status_code;
+    const char* reason;
+};
+
+const std::map<std::string, Refusal> known_not_op = {
     {"Elmo__ECAT_00010420_V11__hw_device_mgr.xml #x00030924:#x00000001 (CoE drive (Elmo))",
-     "ESI defect: its own SyncM category (Eeprom/Category 41) has 9 bytes and puts SM0 at 0x0000; SOEM falls back to "
-     "0x1000/128 bytes and the firmware refuses that mailbox (AL status code 0x0016), as the device would with this image"},
+     {0x0016,
+      "ESI defect: its own SyncM category (Eeprom/Category 41) has 9 bytes and puts SM0 at 0x0000; SOEM falls back to "
+      "0x1000/128 bytes and the firmware refuses that mailbox (invalid mailbox configuration), as the device would "
+      "with this image"}},
     {"Elmo__ECAT_00010420_V11__hw_device_mgr.xml #x00030925:#x00000001 (CoE drive (Elmo))",
-     "ESI defect: the same SyncM category as product 0x00030924 (AL status code 0x0016)"},
+     {0x0016, "ESI defect: the same SyncM category as product 0x00030924"}},
     {"Inovance__SV660_EOE_1Axis_V9.12__hw_device_mgr__2021-09.xml #x000C010D:#x00010000 (CoE drive (Inovance))",
-     "not analysed yet: the firmware refuses SOEM's output SyncManager in PREOP->SAFEOP (AL status code 0x001D)"},
+     {0x001D,
+      "ESI inconsistent: the Dictionary's 0x1C12 and 0x1C13 default to no entries (DefaultData 00) while RxPdo 0x1701 "
+      "and TxPdo 0x1B01 name Sm 2 and 3; SOEM reads the empty 0x1C12 over CoE, falls back to the SII's PDOs and "
+      "enables SM2 with 12 bytes, the firmware's assignment maps none (invalid output configuration)"}},
     {"Weidmueller__UR20_FBC__ethercat-esi.xml #x4F911C30:#x00011100 (modular coupler)",
-     "esi-net cannot place the default modules in the slots, so the coupler runs without them and its PDO "
-     "assignment disagrees with SOEM's SyncManager lengths (AL status code 0x001D)"},
+     {0x001D,
+      "ESI inconsistent: 0x1C12/0x1C13 and the mapping objects 0x16FF/0x1AFF default to no entries (a configuration "
+      "tool downloads them with the module list), while the Mandatory RxPdo 0x16FF names Sm 2; SOEM falls back to the "
+      "SII's PDOs and enables SM2 with 2 bytes, the firmware's assignment maps none (invalid output configuration)"}},
     {"NationalInstruments__NI9144__dls-ethercat.xml #x23B8:2 (modular chassis)",
-     "not analysed yet: the firmware refuses SOEM's output SyncManager with the default modules (AL status code 0x001D)"},
+     {0x001D,
+      "ESI inconsistent: the Outputs SM (SM2) has DefaultSize 0x200 and Enable 1, but the device has no RxPdo; SOEM, "
+      "given no output PDO, keeps the SII's 512-byte SM2 enabled, and the firmware refuses an output SM whose length "
+      "is not that of its PDOs, 0 bytes (invalid output configuration; SOES's ESC_checkSM23 makes the same check)"}},
 };
 
 std::string label_of(const CorpusDevice& d) {
@@ -102,7 +118,13 @@ TEST(SoemCorpus, CatalogueDevicesReachOpWithTheirDefaultPdos) {
         const auto& s = r["slave"][0];
         const auto known = known_not_op.find(label);
         if (known != known_not_op.end()) {
-            EXPECT_EQ(r["op"], false) << "listed as not reaching OP (" << known->second << "), but it does now";
+            EXPECT_EQ(r["op"], false) << "listed as not reaching OP (" << known->second.reason << "), but it does now";
+            EXPECT_EQ(s["al_status_code"], known->second.al_status_code)
+                << "listed as refused with AL status code 0x" << std::hex << known->second.al_status_code << " ("
+                << known->second.reason << "), refused with " << s["al_status_text"];
+            // A mailbox refusal leaves the slave in INIT, a process-data refusal in PREOP.
+            EXPECT_EQ(s["state"].get<unsigned>() & 0x0F, known->second.al_status_code == 0x0016 ? 1u : 2u);
+            EXPECT_NE(s["state"].get<unsigned>() & 0x10, 0u) << "the error indication";
             continue;
         }
         EXPECT_EQ(r["op"], true) << "state " << s["state"] << ", AL status code " << s["al_status_code"] << " "

@@ -38,6 +38,9 @@ Esc::Esc(std::vector<std::uint8_t> eeprom, const EscConfig& config)
     store16(reg::ecat_event_mask, 0x0000);
     store32(reg::al_event_mask, 0xFFFFFFFF);  // the reset value: every event reaches the IRQ
     store16(reg::watchdog_divider, 0x09C2);   // 100 us with a 25 MHz clock
+    store16(reg::watchdog_time_pdi, 0x03E8);  // 1000 x 100 us: 100 ms
+    store16(reg::watchdog_time_process_data, 0x03E8);
+    memory_[reg::watchdog_status_process_data] = 0x01;  // active or disabled; not expired
     load_eeprom();
 }
 
@@ -150,6 +153,7 @@ void Esc::register_read(Side side, std::uint32_t address, std::span<std::uint8_t
         return;
     }
     if (touches(address, end, reg::al_control, 2)) clear_al_event(reg::al_event_al_control);
+    if (touches(address, end, reg::watchdog_status_process_data, 2)) watchdog_status_read_by_pdi();
     for (unsigned n = 0; n < config_.sync_managers; ++n)
         if (touches(address, end, reg::sm0 + reg::sm_stride * n + reg::sm_activate)) sm_activation_unread_ &= ~(1u << n);
     if (sm_activation_unread_ == 0) clear_al_event(reg::al_event_sm_activation);
@@ -182,6 +186,11 @@ void Esc::after_ecat_write(std::uint32_t first, std::uint32_t end) {
         }
     }
     if (touches(first, end, reg::eeprom_control, 2)) eeprom_command();
+    // The watchdog expiry counters are cleared with the RX error counters (0x0300..0x030B).
+    if (touches(first, end, reg::error_counters, 12)) {
+        memory_[reg::watchdog_counter_process_data] = 0;
+        memory_[reg::watchdog_counter_pdi] = 0;
+    }
     for (unsigned n = 0; n < config_.sync_managers; ++n) {
         const std::uint32_t base = reg::sm0 + reg::sm_stride * n;
         if (touches(first, end, base, reg::sm_status) && !(memory_[base + reg::sm_activate] & 1)) sm_reset(n);
@@ -299,6 +308,7 @@ bool Esc::access(Side side, bool is_write, std::uint16_t address, std::span<std:
         if (!done) plain_access(side, is_write, pos, buffer.subspan(pos - first, seg_end - pos));
         pos = seg_end;
     }
+    if (side == Side::ecat && is_write && hits) watchdog_triggered_by(hits);
     return true;
 }
 

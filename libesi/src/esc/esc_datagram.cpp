@@ -10,6 +10,7 @@ namespace esi::esc {
 
 void Esc::begin_pass(const FramePass& pass) {
     pass_ = pass;
+    watchdog_check();
     refresh_system_time();
     refresh_dl_status();
     // Idealised SYNC: one SYNC0 (and SYNC1) event per frame while the unit is active.

@@ -14,6 +14,7 @@ inline constexpr std::uint16_t al_control = 0x0120;
 inline constexpr std::uint16_t al_status = 0x0130;
 inline constexpr std::uint16_t al_status_code = 0x0134;
 inline constexpr std::uint16_t al_event_request = 0x0220;
+inline constexpr std::uint16_t watchdog_status_process_data = 0x0440;  // bit 0: 0 expired
 inline constexpr std::uint16_t dc_activation = 0x0980;  // cyclic unit control (0x0980) and activation (0x0981)
 inline constexpr std::uint16_t dc_sync0_cycle = 0x09A0;
 
@@ -26,6 +27,7 @@ inline constexpr std::uint8_t sm_activate_repeat = 0x02;
 inline constexpr std::uint8_t sm_pdi_repeat_ack = 0x02;
 
 inline constexpr std::uint32_t al_event_control = 0x0001;
+inline constexpr std::uint32_t al_event_watchdog_process_data = 0x0040;
 
 [[nodiscard]] inline std::uint8_t read_u8(esc::Pdi& pdi, std::uint16_t address) {
     std::array<std::uint8_t, 1> b{};

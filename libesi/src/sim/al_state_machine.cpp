@@ -56,6 +56,13 @@ void AlStateMachine::write_status(esc::Pdi& pdi, bool identify) {
     reg::write_u16(pdi, reg::al_status, status);
 }
 
+void AlStateMachine::local_error(esc::Pdi& pdi, AlState to, std::uint16_t code) {
+    state_ = to;
+    error_ = true;
+    code_ = code;
+    write_status(pdi, false);
+}
+
 void AlStateMachine::poll(esc::Pdi& pdi, AlTransitions& device) {
     if (!started_) {
         started_ = true;

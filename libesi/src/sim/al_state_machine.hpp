@@ -23,6 +23,7 @@ inline constexpr std::uint16_t unknown_state = 0x0012;
 inline constexpr std::uint16_t bootstrap_not_supported = 0x0013;
 inline constexpr std::uint16_t invalid_mailbox_configuration = 0x0016;
 inline constexpr std::uint16_t invalid_sm_configuration = 0x0017;
+inline constexpr std::uint16_t sm_watchdog = 0x001B;
 inline constexpr std::uint16_t invalid_output_configuration = 0x001D;
 inline constexpr std::uint16_t invalid_input_configuration = 0x001E;
 inline constexpr std::uint16_t invalid_dc_sync_configuration = 0x0030;
@@ -42,6 +43,9 @@ class AlStateMachine {
 public:
     // Reacts to an AL control event, if there is one; writes the AL status at the first call.
     void poll(esc::Pdi& pdi, AlTransitions& device);
+    // The device leaves its state on its own (a local error such as an expired watchdog): it
+    // goes to `to` with the error indication and `code`, which the master acknowledges.
+    void local_error(esc::Pdi& pdi, AlState to, std::uint16_t code);
     [[nodiscard]] AlState state() const { return state_; }
     [[nodiscard]] bool error() const { return error_; }
     [[nodiscard]] std::uint16_t code() const { return code_; }

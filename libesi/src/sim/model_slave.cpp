@@ -33,6 +33,7 @@ public:
 
     void poll(esc::Pdi& pdi) override {
         al_.poll(pdi, *this);
+        watch_outputs(pdi);
         const AlState state = al_.state();
         if (mailbox_ && (state == AlState::preop || state == AlState::safeop || state == AlState::op)) mailbox_->poll(pdi, state);
         if (state == AlState::safeop || state == AlState::op) exchange_process_data(pdi, state);
@@ -52,6 +53,27 @@ private:
         return rules;
     }
 
+    // The process-data watchdog of the ESC ran out in OP (the master stopped writing outputs):
+    // the outputs go to their safe state, 0, and the device to SAFEOP with the error indication
+    // and "SyncManager watchdog" (ETG.1000.6 Table 11), as ETG.1000.6 6.4 has a device do.
+    void watch_outputs(esc::Pdi& pdi) {
+        if (!(reg::read_u32(pdi, reg::al_event_request) & reg::al_event_watchdog_process_data)) return;
+        const bool expired = !(reg::read_u16(pdi, reg::watchdog_status_process_data) & 1);  // clears the event
+        if (!expired) return;
+        watchdog_expired_ = true;
+        if (al_.state() != AlState::op) return;
+        outputs_to_safe_state();
+        al_.local_error(pdi, AlState::safeop, al_code::sm_watchdog);
+    }
+
+    void outputs_to_safe_state() {
+        for (const SmProcessData& data : layout_) {
+            if (data.role != SmRole::outputs || data.bytes() == 0) continue;
+            const std::vector<std::uint8_t> zeros(data.bytes(), 0);
+            buffer_to_objects(data, zeros, model_.dictionary);
+        }
+    }
+
     std::uint16_t check(esc::Pdi& pdi, AlState from, AlState to) override {
         if (from == AlState::init && to == AlState::preop && expected_.mailbox_out && expected_.mailbox_in)
             return check_mailbox_sms(pdi, *expected_.mailbox_out, *expected_.mailbox_in);
@@ -67,6 +89,12 @@ private:
                     return code;
             }
             return check_dc(pdi, expected_.assign_activate);
+        }
+        // No OP on outputs that have stopped coming: the master writes them again first (a
+        // write rewinds the watchdog and sets its status again).
+        if (from == AlState::safeop && to == AlState::op && watchdog_expired_) {
+            if (!(reg::read_u16(pdi, reg::watchdog_status_process_data) & 1)) return al_code::sm_watchdog;
+            watchdog_expired_ = false;
         }
         return al_code::none;
     }
@@ -112,6 +140,7 @@ private:
     AlStateMachine al_;
     std::vector<SmProcessData> layout_;
     std::vector<std::uint8_t> outputs_;
+    bool watchdog_expired_ = false;  // the ESC reported an expiry the outputs have not yet ended
 };
 
 }  // namespace

@@ -7,11 +7,20 @@
  * --echo   checks that each slave's inputs repeat its outputs of the cycle before (esi-sim --echo)
  * --dc     configures distributed clocks (ecx_configdc) before SAFEOP
  * --sdo    reads every object the slaves list over SDO Information, each sub-index by ecx_SDOread,
- *          in SAFEOP (before the process data has changed any object)
+ *          in SAFEOP (before the process data has changed any object); prints the descriptions
+ *          ecx_readODlist, ecx_readODdescription and ecx_readOE got ("od"). Only slaves whose SII
+ *          declares SDO Information (CoE details bit 1): SOEM 2.x crashes on the mailbox error a
+ *          slave without it answers (docs/esi-sim.md, "SOEM and SDO Information")
  * --init POS:INDEX:SUB:CA:HEX  an SDO download in PREOP->SAFEOP before the mapping is read (an ENI's
  *          CoE InitCmds for transition PS; POS is the slave's 0-based position, CA 1 for complete access)
  * --scan-only  stops after ecx_config_init (and reports the ESC's EEPROM and PDI state)
  * --state-timeout-ms T  how long to wait for SAFEOP, and for OP (default 4000)
+ * --watchdog-ms W  sets each slave's process-data watchdog (0x0420, in 100 us ticks) before SAFEOP
+ * --cycle-us U     waits U microseconds after each cycle (a paced cycle instead of back to back)
+ * --stop-ms S      after the cycles, sends nothing for S ms, then reports what slave 1 shows
+ *                  ("stopped": watchdog status 0x0440, expiry counter 0x0442, AL state and code, its
+ *                  inputs after one more cycle) and whether it returns to OP once the master
+ *                  cycles again and acknowledges the error
  */
 #include "soem/soem.h"
 
@@ -131,9 +140,10 @@ static void print_slaves(void)
              slave->state, slave->ALstatuscode);
       print_string(ec_ALstatuscode2string(slave->ALstatuscode));
       printf(",\"eeprom_status\":%u,\"eeprom_checksum_error\":%s,\"eeprom_not_loaded\":%s,\"dl_status\":%u,"
-             "\"pdi_operational\":%s,\"has_dc\":%s,\"mbx_protocols\":%u}",
+             "\"pdi_operational\":%s,\"has_dc\":%s,\"mbx_protocols\":%u,\"coe_details\":%u}",
              eeprom_status, (eeprom_status & 0x0800) ? "true" : "false", (eeprom_status & 0x1000) ? "true" : "false",
-             dl_status, (dl_status & 1) ? "true" : "false", slave->hasdc ? "true" : "false", slave->mbx_proto);
+             dl_status, (dl_status & 1) ? "true" : "false", slave->hasdc ? "true" : "false", slave->mbx_proto,
+             slave->CoEdetails);
    }
    printf("]");
 }
@@ -150,11 +160,15 @@ static void read_dictionaries(void)
    static ec_ODlistt od;
    static ec_OElistt oe;
    static uint8 value[4096];
+   /* What SDO Information described, printed after the reads (one array per key). */
+   static char descriptions[1 << 20];
+   size_t used = 0;
    printf(",\"sdo\":[");
    int first = 1;
    for (int s = 1; s <= context.slavecount; ++s)
    {
       if (!(context.slavelist[s].mbx_proto & ECT_MBXPROT_COE)) continue;
+      if (!(context.slavelist[s].CoEdetails & ECT_COEDET_SDOINFO)) continue;
       memset(&od, 0, sizeof od);
       if (ecx_readODlist(&context, (uint16)s, &od) <= 0) continue;
       for (int i = 0; i < od.Entries; ++i)
@@ -162,6 +176,15 @@ static void read_dictionaries(void)
          ecx_readODdescription(&context, (uint16)i, &od);
          memset(&oe, 0, sizeof oe);
          ecx_readOE(&context, (uint16)i, &od, &oe);
+         used += (size_t)snprintf(descriptions + used, sizeof descriptions - used,
+                                  "%s{\"slave\":%d,\"index\":%u,\"data_type\":%u,\"object_code\":%u,\"max_sub\":%u,\"entries\":[",
+                                  used ? "," : "", s - 1, od.Index[i], od.DataType[i], od.ObjectCode[i], od.MaxSub[i]);
+         for (int sub = 0; sub <= od.MaxSub[i] && sub < EC_MAXOELIST && used < sizeof descriptions; ++sub)
+            used += (size_t)snprintf(descriptions + used, sizeof descriptions - used,
+                                     "%s{\"sub\":%d,\"data_type\":%u,\"bit_length\":%u,\"access\":%u}", sub ? "," : "", sub,
+                                     oe.DataType[sub], oe.BitLength[sub], oe.ObjAccess[sub]);
+         if (used < sizeof descriptions) used += (size_t)snprintf(descriptions + used, sizeof descriptions - used, "]}");
+         if (used >= sizeof descriptions) used = sizeof descriptions - 1;
          for (int sub = 0; sub <= od.MaxSub[i] && sub < EC_MAXOELIST; ++sub)
          {
             if (sub > 0 && oe.DataType[sub] == 0 && oe.BitLength[sub] == 0) continue;
@@ -181,7 +204,47 @@ static void read_dictionaries(void)
          ecx_poperror(&context, &error);
       }
    }
-   printf("]");
+   printf("],\"od\":[%s]", descriptions);
+}
+
+/* The master stops cycling for stop_ms: what slave 1 shows then, and whether it comes back to OP
+ * once the master cycles again and acknowledges the error. */
+static void report_stop(int stop_ms, int cycle, int state_timeout_ms)
+{
+   ec_slavet *slave = &context.slavelist[1];
+   uint16 status = 0xFFFF, code = 0xFFFF, al = 0;
+   uint8 counter = 0xFF, counter_before = 0xFF;
+   uint16 al_before = 0;
+   /* Still cycling until here: nothing has expired, the slave is in OP. */
+   ecx_FPRD(&context.port, slave->configadr, ECT_REG_WDCNT, sizeof counter_before, &counter_before, EC_TIMEOUTRET3);
+   ecx_FPRD(&context.port, slave->configadr, ECT_REG_ALSTAT, sizeof al_before, &al_before, EC_TIMEOUTRET3);
+   osal_usleep((uint32)stop_ms * 1000);
+   /* The first frame after the silence: the ESC finds the watchdog expired before this read. */
+   ecx_FPRD(&context.port, slave->configadr, 0x0440, sizeof status, &status, EC_TIMEOUTRET3);
+   ecx_FPRD(&context.port, slave->configadr, ECT_REG_WDCNT, sizeof counter, &counter, EC_TIMEOUTRET3);
+   ecx_FPRD(&context.port, slave->configadr, ECT_REG_ALSTAT, sizeof al, &al, EC_TIMEOUTRET3);
+   ecx_FPRD(&context.port, slave->configadr, ECT_REG_ALSTATCODE, sizeof code, &code, EC_TIMEOUTRET3);
+   /* One more cycle: the inputs the slave wrote after it found the watchdog expired. */
+   write_outputs(cycle);
+   ecx_send_processdata(&context);
+   ecx_receive_processdata(&context, 100000);
+   int inputs_zero = 1;
+   for (uint32 i = 0; i < slave->Ibytes; ++i)
+      if (slave->inputs[i]) inputs_zero = 0;
+   /* Back to OP: cycle, acknowledge the error, request OP. */
+   slave->state = EC_STATE_OPERATIONAL | EC_STATE_ACK;
+   ecx_writestate(&context, 1);
+   int op = 0;
+   for (int i = 0; i < state_timeout_ms / 10 && !op; ++i)
+   {
+      write_outputs(cycle + 1 + i);
+      ecx_send_processdata(&context);
+      ecx_receive_processdata(&context, 100000);
+      op = ecx_statecheck(&context, 1, EC_STATE_OPERATIONAL, 10000) == EC_STATE_OPERATIONAL;
+   }
+   printf(",\"stopped\":{\"watchdog_counter_before\":%u,\"al_status_before\":%u,\"watchdog_status\":%u,\"watchdog_counter\":%u,\"al_status\":%u,\"al_status_code\":%u,"
+          "\"inputs_zero\":%s,\"back_in_op\":%s}",
+          counter_before, etohs(al_before), etohs(status), counter, etohs(al), etohs(code), inputs_zero ? "true" : "false", op ? "true" : "false");
 }
 
 int main(int argc, char **argv)
@@ -192,6 +255,7 @@ int main(int argc, char **argv)
       return 2;
    }
    int cycles = 1000, echo = 0, dc = 0, sdo = 0, scan_only = 0, state_timeout_ms = 4000;
+   int watchdog_ms = 0, cycle_us = 0, stop_ms = 0;
    for (int i = 2; i < argc; ++i)
    {
       if (!strcmp(argv[i], "--cycles") && i + 1 < argc) cycles = atoi(argv[++i]);
@@ -208,6 +272,9 @@ int main(int argc, char **argv)
          }
       }
       else if (!strcmp(argv[i], "--state-timeout-ms") && i + 1 < argc) state_timeout_ms = atoi(argv[++i]);
+      else if (!strcmp(argv[i], "--watchdog-ms") && i + 1 < argc) watchdog_ms = atoi(argv[++i]);
+      else if (!strcmp(argv[i], "--cycle-us") && i + 1 < argc) cycle_us = atoi(argv[++i]);
+      else if (!strcmp(argv[i], "--stop-ms") && i + 1 < argc) stop_ms = atoi(argv[++i]);
    }
    const double start = now_ms();
    if (!ecx_init(&context, argv[1]))
@@ -229,6 +296,12 @@ int main(int argc, char **argv)
    /* In PREOP, before any process data has changed an object. */
    ecx_config_map_group(&context, io_map, 0);
    if (dc) ecx_configdc(&context);
+   if (watchdog_ms > 0)
+      for (int s = 1; s <= context.slavecount; ++s)
+      {
+         uint16 ticks = htoes((uint16)(watchdog_ms * 10)); /* the default divider: 100 us per tick */
+         ecx_FPWR(&context.port, context.slavelist[s].configadr, 0x0420, sizeof ticks, &ticks, EC_TIMEOUTRET3);
+      }
    ec_groupt *group = &context.grouplist[0];
    int expected_wkc = group->outputsWKC * 2 + group->inputsWKC;
    ecx_statecheck(&context, 0, EC_STATE_SAFE_OP, state_timeout_ms * 1000);
@@ -259,6 +332,7 @@ int main(int argc, char **argv)
          int wkc = ecx_receive_processdata(&context, 100000);
          ++ran;
          if (wkc == expected_wkc) ++wkc_ok;
+         if (cycle_us > 0) osal_usleep((uint32)cycle_us);
          /* The inputs read in cycle c were written by the slave after cycle c - 1's outputs. */
          if (echo && c > 2)
          {
@@ -267,6 +341,7 @@ int main(int argc, char **argv)
          }
       }
    }
+   if (op && stop_ms > 0) report_stop(stop_ms, cycles + 1, state_timeout_ms);
    ecx_readstate(&context);
    printf(",\"expected_wkc\":%d,\"op\":%s,\"to_op_ms\":%.1f,\"cycles\":%d,\"wkc_ok\":%d,\"echo_checked\":%d,\"echo_ok\":%d",
           expected_wkc, op ? "true" : "false", to_op, ran, wkc_ok, echo_checked, echo_ok);

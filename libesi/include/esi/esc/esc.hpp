@@ -137,6 +137,11 @@ private:
     // esc_eeprom.cpp
     void eeprom_command();
 
+    // esc_watchdog.cpp
+    void watchdog_triggered_by(std::uint32_t sm_hits);
+    void watchdog_check();
+    void watchdog_status_read_by_pdi();
+
     // esc_datagram.cpp
     [[nodiscard]] bool station_matches(std::uint16_t adp) const;
     void physical(Datagram& datagram, bool addressed, bool reads, bool writes, bool or_reads);
@@ -147,6 +152,8 @@ private:
     bool eeprom_loaded_ = false;
     std::vector<SmState> sms_;
     std::uint32_t sm_activation_unread_ = 0;  // SMs whose activate changed since the PDI read it
+    bool watchdog_armed_ = false;               // triggered at least once since power-on
+    std::uint64_t watchdog_trigger_ns_ = 0;     // the last trigger (a write to a watched SM)
     FramePass pass_;
 };
 

@@ -34,6 +34,11 @@ inline constexpr std::uint16_t ecat_event_request = 0x0210;
 inline constexpr std::uint16_t al_event_request = 0x0220;
 inline constexpr std::uint16_t error_counters = 0x0300;  // 0x0300..0x0313
 inline constexpr std::uint16_t watchdog_divider = 0x0400;
+inline constexpr std::uint16_t watchdog_time_pdi = 0x0410;
+inline constexpr std::uint16_t watchdog_time_process_data = 0x0420;
+inline constexpr std::uint16_t watchdog_status_process_data = 0x0440;  // bit 0: 1 active or disabled, 0 expired
+inline constexpr std::uint16_t watchdog_counter_process_data = 0x0442;
+inline constexpr std::uint16_t watchdog_counter_pdi = 0x0443;
 inline constexpr std::uint16_t eeprom_configuration = 0x0500;
 inline constexpr std::uint16_t eeprom_pdi_state = 0x0501;
 inline constexpr std::uint16_t eeprom_control = 0x0502;
@@ -64,6 +69,7 @@ inline constexpr std::uint16_t process_ram = 0x1000;
 inline constexpr std::uint16_t sm_start = 0, sm_length = 2, sm_control = 4, sm_status = 5, sm_activate = 6,
                                sm_pdi_control = 7;
 inline constexpr std::uint16_t sm_stride = 8;
+inline constexpr std::uint8_t sm_control_watchdog_trigger = 0x40;
 // FMMU register offsets (from fmmu0 + 16 n).
 inline constexpr std::uint16_t fmmu_logical_start = 0, fmmu_length = 4, fmmu_logical_start_bit = 6,
                                fmmu_logical_stop_bit = 7, fmmu_physical_start = 8, fmmu_physical_start_bit = 10,
@@ -76,6 +82,7 @@ inline constexpr std::uint32_t al_event_sync0 = 1u << 2;
 inline constexpr std::uint32_t al_event_sync1 = 1u << 3;
 inline constexpr std::uint32_t al_event_sm_activation = 1u << 4;
 inline constexpr std::uint32_t al_event_eeprom = 1u << 5;
+inline constexpr std::uint32_t al_event_watchdog_process_data = 1u << 6;
 [[nodiscard]] constexpr std::uint32_t al_event_sm(unsigned n) { return 1u << (8 + n); }
 
 // ECAT event request (0x0210) bits.
