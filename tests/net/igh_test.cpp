@@ -119,7 +119,7 @@ TEST(IghConfig, RegistersEveryMappedEntryOnceWithBitPositionsWhereNeeded) {
     ASSERT_TRUE(built.network) << esi::test::diagnostics_text(built.diagnostics);
     const std::string c = esi::net::write_igh_source(*built.network);
     // EL2202: four 1-bit entries, each registered with a bit position.
-    EXPECT_NE(c.find("{0, 0, 0x00000002, 0x089a3052, 0x7000, 0x01, &out_output, &out_output_bit}"), std::string::npos) << c;
+    EXPECT_NE(c.find("{0, 0, 0x00000002, 0x089a3052, 0x7000, 0x01, &out_channel_1_output, &out_channel_1_output_bit}"), std::string::npos) << c;
     EXPECT_NE(c.find("{0, 0, 0x00000002, 0x089a3052, 0x7010, 0x02, &out_channel_2_tristate, &out_channel_2_tristate_bit}"), std::string::npos) << c;
     EXPECT_NE(c.find("ecrt_slave_config_pdos(sc, EC_END, out_syncs)"), std::string::npos);
 }

@@ -60,7 +60,7 @@ std::vector<std::string> slave_facts(const pugi::xml_node& slave) {
 
 TEST(Lcec, MatchesTheConfigWrittenFromTheSameEsi) {
     ESI_REQUIRE_CORPUS();
-    const esi::net::BuildResult built = esi::test::build_corpus_network(R"(master: { name: bohign, cycle_time_us: 10000 }
+    const esi::net::BuildResult built = esi::test::build_corpus_network(R"(master: { name: bohign, cycle_time_us: 10000, lcec_fork: sittner }
 slaves:
   - { name: drive0, vendor_id: 0x994, product_code: 0x1B00 }
   - { name: drive1, vendor_id: 0x994, product_code: 0x1B00 }

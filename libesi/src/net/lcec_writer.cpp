@@ -3,6 +3,13 @@
 // and pdoEntry with halPin and halType — plus what the ESI knows and a bus scan does not: the
 // DC op mode (dcConf), the ESC watchdog and the start-up SDOs (sdoConfig).
 //
+// Two maintained forks read this file, and each stops at an attribute or value it does not know
+// (its parser has no "ignore unknown"): linuxcnc-ethercat/linuxcnc-ethercat (the default, where
+// lcec_configgen lives) has no `refClockSlaveIdx` and reads `float-double-ieee`;
+// sittner/linuxcnc-ethercat takes `refClockSlaveIdx` but not `float-double-ieee`. Neither has
+// a 64-bit HAL type, so a 64-bit entry stays mapped (the mapping is the ESI's) without a pin,
+// and says so in a comment, rather than getting a pin of the wrong width.
+//
 // Pin names follow lcec_configgen: the entry's name in lower case, runs of other characters
 // as '-', "pin-<index>-<sub>" for an unnamed entry; a name used twice in a slave gets the last
 // word of its PDO's name in front. HAL types follow the entry's data type as lcec_configgen
@@ -13,6 +20,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include "esi/data_types.hpp"
 #include "esi/net/outputs.hpp"
@@ -44,28 +52,42 @@ std::string trim_dashes(std::string s) {
     return s;
 }
 
-std::string hal_type(const ConfiguredEntry& e) {
+// The HAL type of an entry as lcec_configgen infers it, or nullopt when the fork has none for it.
+std::optional<std::string> hal_type(const ConfiguredEntry& e, LcecFork fork) {
     if (e.bit_len < 8) return "bit";
     const BasicType* basic = find_basic_type(e.data_type);
     if (!basic) basic = find_basic_type(standard_type_name_for(e.data_type));
-    if (basic && basic->type_class == TypeClass::real) return e.bit_len == 32 ? "float-ieee" : "float-double-ieee";
+    if (basic && basic->type_class == TypeClass::real) {
+        if (e.bit_len == 32) return "float-ieee";
+        if (e.bit_len == 64 && fork == LcecFork::linuxcnc_ethercat) return "float-double-ieee";
+        return std::nullopt;
+    }
+    if (e.bit_len > 32) return std::nullopt;
     const bool is_signed = basic && basic->type_class == TypeClass::signed_integer;
-    if (e.bit_len > 32) return is_signed ? "s64" : "u64";
     return is_signed ? "s32" : "u32";
 }
+
+std::string_view fork_name(LcecFork fork) { return fork == LcecFork::sittner ? "sittner" : "linuxcnc-ethercat"; }
 
 std::string hex_attr(std::uint32_t v, int digits) { return fmt::format("{:0{}x}", v, digits); }
 
 }  // namespace
 
 std::string write_lcec(const Network& n) {
+    const LcecFork fork = n.master.lcec_fork;
     XmlText x;
     x.drop_declaration();
+    x.comment(fmt::format("for github.com/{0}/linuxcnc-ethercat (NETWORK.yaml master.lcec_fork: {0})",
+                          fork == LcecFork::sittner ? "sittner" : "linuxcnc-ethercat"));
     x.open("masters");
     const std::uint64_t cycle_ns = std::uint64_t{n.master.cycle_time_us} * 1000;
     XmlText::Attributes master = {{"idx", "0"}, {"appTimePeriod", std::to_string(cycle_ns)}, {"refClockSyncCycles", "1"}};
-    if (n.reference_clock) master.emplace_back("refClockSlaveIdx", std::to_string(*n.reference_clock));
+    if (n.reference_clock && fork == LcecFork::sittner) master.emplace_back("refClockSlaveIdx", std::to_string(*n.reference_clock));
     x.open("master", master);
+    if (n.reference_clock && fork != LcecFork::sittner)
+        x.comment(fmt::format("DC reference clock: slave {} in the ENI; this fork has no refClockSlaveIdx, IgH takes the first "
+                              "DC-capable slave (lcec_fork: sittner writes it)",
+                              *n.reference_clock));
     for (const NetworkSlave& s : n.slaves) {
         std::string name = trim_dashes(pin_text(s.name));
         if (name.empty()) name = "d" + std::to_string(s.position + 1);
@@ -122,7 +144,11 @@ std::string write_lcec(const Network& n) {
                 if (!p.name.empty()) x.comment(p.name);
                 for (const ConfiguredEntry& e : p.entries) {
                     XmlText::Attributes a = {{"idx", hex_attr(e.index, 4)}, {"subIdx", hex_attr(e.subindex, 2)}, {"bitLen", std::to_string(e.bit_len)}};
-                    if (!e.is_padding()) {
+                    const std::optional<std::string> type = e.is_padding() ? std::nullopt : hal_type(e, fork);
+                    if (!e.is_padding() && !type)
+                        x.comment(fmt::format("0x{:04X}:{:02X} ({} bits) has no HAL pin: {} has no HAL type for it", e.index, e.subindex,
+                                              e.bit_len, fork_name(fork)));
+                    if (type) {
                         std::string pin = base_pin(e);
                         if (count[pin] > 1) {
                             const std::size_t space = p.name.rfind(' ');
@@ -131,7 +157,7 @@ std::string write_lcec(const Network& n) {
                         }
                         if (const int n_used = used[pin]++; n_used > 0) pin += "-" + std::to_string(n_used + 1);
                         a.emplace_back("halPin", pin);
-                        a.emplace_back("halType", hal_type(e));
+                        a.emplace_back("halType", *type);
                     }
                     x.empty("pdoEntry", a);
                 }

@@ -88,6 +88,13 @@ private:
                 else m.source_mac = v->text;
             }
         }
+        if (const Node* n = f->find("lcec_fork")) {
+            if (auto t = reader_.text(*n, "lcec_fork")) {
+                if (*t == "linuxcnc-ethercat") m.lcec_fork = LcecFork::linuxcnc_ethercat;
+                else if (*t == "sittner") m.lcec_fork = LcecFork::sittner;
+                else reader_.error(*n, "yaml-type", "'lcec_fork' must be 'linuxcnc-ethercat' or 'sittner'");
+            }
+        }
     }
 
     // "0x607A:0x00:32": index, sub-index and bit length, each decimal, 0x… or #x….

@@ -5,7 +5,7 @@ namespace esi::net {
 namespace {
 
 constexpr std::string_view root_keys[] = {"esi", "master", "slaves"};
-constexpr std::string_view master_keys[] = {"name", "cycle_time_us", "dc", "source_mac"};
+constexpr std::string_view master_keys[] = {"name", "cycle_time_us", "dc", "source_mac", "lcec_fork"};
 constexpr std::string_view slave_keys[] = {"name",   "device",      "vendor_id", "product_code", "revision", "esi_file", "alias", "pdos",
                                            "pdo_mapping", "pdo_entries", "dc",   "modules",  "sdos",  "limits",
                                            "ros2_interfaces", "force_entries"};

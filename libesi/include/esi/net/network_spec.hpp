@@ -15,11 +15,19 @@
 
 namespace esi::net {
 
+// The linuxcnc-ethercat lcec.xml is written for. The two maintained forks read the same grammar
+// but refuse each other's additions (docs/esi-net.md, "linuxcnc-ethercat").
+enum class LcecFork {
+    linuxcnc_ethercat,  // github.com/linuxcnc-ethercat/linuxcnc-ethercat (lcec_configgen's home)
+    sittner,            // github.com/sittner/linuxcnc-ethercat
+};
+
 struct MasterSpec {
     std::string name = "Master";
     std::uint32_t cycle_time_us = 1000;
     bool dc = true;  // false: every slave runs without DC (free run or SM-synchronous)
     std::string source_mac = "000000000000";  // ENI Master/Info/Source (12 hex digits)
+    LcecFork lcec_fork = LcecFork::linuxcnc_ethercat;
     SourcePos pos;
 };
 
