@@ -13,7 +13,7 @@ packages="build-essential cmake ninja-build pkgconf git
 libpugixml-dev libcli11-dev libfmt-dev nlohmann-json3-dev libyaml-dev
 libgtest-dev libgmock-dev libbenchmark-dev libkainjow-mustache-dev libxml2-dev libxml2-utils
 clang libclang-rt-14-dev ccache
-groff-base man-db zsh fish iproute2"
+groff-base man-db zsh fish iproute2 neovim"
 [ "${1:-}" = "--with-browser" ] && packages="$packages chromium"
 [ "${1:-}" = "--with-sarif-validator" ] && ! command -v npm >/dev/null && packages="$packages npm"
 
