@@ -35,13 +35,11 @@ bool is_token(std::string_view name) {
 struct Header {
     std::optional<std::size_t> length;
     std::string problem;
-    bool looks_like_headers = true;  // false: the block is not headers at all (garbage before one)
 };
 
 // Parses "Name: value" lines (terminated by \r\n or \n).
 Header parse_header(std::string_view block) {
     Header header;
-    bool first = true;
     while (!block.empty()) {
         const std::size_t eol = block.find('\n');
         std::string_view line = block.substr(0, eol);
@@ -51,11 +49,9 @@ Header parse_header(std::string_view block) {
         const std::size_t colon = line.find(':');
         const std::string_view name = colon == std::string_view::npos ? line : line.substr(0, colon);
         if (colon == std::string_view::npos || !is_token(name)) {
-            if (first) header.looks_like_headers = false;
             header.problem = "header line is not `Name: value`";
             return header;
         }
-        first = false;
         if (lower(name) != length_header) continue;  // Content-Type and others: nothing to do with them
         const std::string_view value = trim(line.substr(colon + 1));
         std::size_t length = 0;
@@ -75,12 +71,14 @@ Header parse_header(std::string_view block) {
 bool MessageReader::fill() {
     if (at_end_) return false;
     compact();
-    const std::size_t old_size = buffer_.size();
-    buffer_.resize(old_size + read_chunk);
-    const std::ptrdiff_t got = read_(buffer_.data() + old_size, read_chunk);
-    buffer_.resize(old_size + static_cast<std::size_t>(std::max<std::ptrdiff_t>(got, 0)));
-    if (got <= 0) at_end_ = true;
-    return got > 0;
+    char chunk[read_chunk];
+    const std::ptrdiff_t got = read_(chunk, read_chunk);
+    if (got <= 0) {
+        at_end_ = true;
+        return false;
+    }
+    buffer_.append(chunk, static_cast<std::size_t>(got));
+    return true;
 }
 
 void MessageReader::compact() {
@@ -121,15 +119,17 @@ Frame MessageReader::next() {
             continue;
         }
         const Header header = parse_header(pending.substr(0, block_end));
-        if (!header.looks_like_headers) {
-            const std::size_t found = lower(pending).find(length_header, 1);
-            if (found != std::string::npos && found < block_end) {
-                start_ += found;  // garbage before a header: resume at the header
+        if (!header.length) {
+            // Garbage before a header ("xyzContent-Length: 7"): resume at the header.
+            const std::size_t found = lower(pending.substr(0, block_end)).find(length_header, 1);
+            if (found != std::string::npos) {
+                start_ += found;
                 return {Frame::Kind::bad_header, {}, "bytes outside any message skipped"};
             }
+            start_ += block_end + terminator;
+            return {Frame::Kind::bad_header, {}, header.problem};
         }
         start_ += block_end + terminator;
-        if (!header.length) return {Frame::Kind::bad_header, {}, header.problem};
         const std::size_t length = *header.length;
         if (length > max_body_) {
             std::size_t left = length;
