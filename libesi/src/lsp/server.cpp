@@ -294,7 +294,7 @@ Json Server::code_action(const Json& params) {
     const auto it = results_.find(uri);
     // The findings of an older text would place their edits wrongly: none until the lint of this
     // version is in.
-    if (it == results_.end() || it->second.version != document->version || *it->second.text != *document->text)
+    if (it == results_.end() || it->second.version != document->version || it->second.text != document->text)
         return Json::array();
     return code_actions(it->second, range);
 }
