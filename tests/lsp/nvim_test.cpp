@@ -40,6 +40,8 @@ NvimRun run_nvim(const std::filesystem::path& file, const esi::test::TempDir& ou
     const std::string script = (esi::test::source_dir() / "tests/lsp/nvim_client.lua").string();
     const esi::test::RunResult result = esi::test::run(
         {"env", "ESI_NVIM_OUT=" + out.path().string(), "ESI_NVIM_FILE=" + file.string(), "ESI_LSP=" + esi::test::tool("esi-lsp").string(),
+         // Neovim's LSP log and state go to the test's directory, not to a home that may be read-only.
+         "XDG_CACHE_HOME=" + out.path().string(), "XDG_STATE_HOME=" + out.path().string(), "XDG_DATA_HOME=" + out.path().string(),
          "timeout", "90", "nvim", "--headless", "--clean", "-n", "-i", "NONE", "-c", "luafile " + script});
     NvimRun run;
     if (std::filesystem::exists(out / "error.txt")) run.error = esi::test::read_text(out / "error.txt");
