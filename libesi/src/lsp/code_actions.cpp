@@ -74,10 +74,15 @@ json workspace_edit(const std::string& uri, const std::vector<TextEdit>& edits, 
 }  // namespace
 
 json to_lsp_diagnostic(const Diagnostic& d, const LineIndex& index, std::string_view text, const std::string& uri) {
-    const Position start = index.position_of(d.pos);
-    const auto [from, to] = underline(d, index.offset_of(start), text);
+    const auto [from, to] = underline(d, index.offset_of(d.pos), text);
+    const Position start = index.position_of(from);
+    // The end from the start: a finding on a line of a megabyte is counted from its line start once.
+    const std::string_view underlined = text.substr(from, to - from);
+    const Position end = underlined.find('\n') == std::string_view::npos
+                             ? Position{start.line, start.character + static_cast<std::uint32_t>(utf16_length(underlined))}
+                             : index.position_of(to);
     json out = {
-        {"range", to_json(Range{index.position_of(from), index.position_of(to)})},
+        {"range", to_json(Range{start, end})},
         {"severity", lsp_severity(d.severity)},
         {"source", "esi-lint"},
         {"message", d.message},

@@ -138,4 +138,13 @@ Position LineIndex::position_of(SourcePos pos) const {
     return position;
 }
 
+std::size_t LineIndex::offset_of(SourcePos pos) const {
+    if (!pos.known()) return 0;
+    if (pos.line - 1 >= starts_.size()) return text_.size();
+    const std::size_t start = starts_[pos.line - 1];
+    std::size_t end = text_.find('\n', start);
+    if (end == std::string_view::npos) end = text_.size();
+    return skip(text_, start, end, pos.column > 0 ? pos.column - 1 : 0, 1);
+}
+
 }  // namespace esi::lsp

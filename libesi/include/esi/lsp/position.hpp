@@ -44,6 +44,8 @@ public:
     [[nodiscard]] std::size_t offset_of(Position position) const;
     [[nodiscard]] Position position_of(std::size_t offset) const;
     [[nodiscard]] Position position_of(SourcePos pos) const;
+    // The byte offset of a lint finding's line:column.
+    [[nodiscard]] std::size_t offset_of(SourcePos pos) const;
 
 private:
     std::string_view text_;
