@@ -87,6 +87,9 @@ TEST(LspProtocol, MalformedJsonRpcGetsErrorsAndTheSessionGoesOn) {
     EXPECT_EQ(error_code(raw("{\"jsonrpc\": \"2.0\", \"id\": {\"a\": 1}, \"method\": \"shutdown\"}")), -32600);
     EXPECT_EQ(error_code(raw("{\"jsonrpc\": \"2.0\", \"id\": 8, \"method\": 42}")), -32600);
     EXPECT_EQ(error_code(raw("{\"jsonrpc\": \"2.0\", \"id\": 9, \"method\": \"textDocument/codeAction\", \"params\": 5}")), -32602);
+    // Nested a million deep, and bytes that are not UTF-8: errors, not a stack overflow or a crash.
+    EXPECT_EQ(error_code(raw(std::string(1'000'000, '[') + std::string(1'000'000, ']'))), -32600);
+    EXPECT_EQ(error_code(raw("{\"jsonrpc\": \"2.0\", \"id\": 10, \"method\": \"\xFF\xFE\"}")), -32700);
     // Params of the wrong shape: InvalidParams, not a crash.
     EXPECT_EQ(error_code(client.request("textDocument/codeAction", {{"textDocument", 3}})), -32602);
     EXPECT_EQ(error_code(client.request("textDocument/codeAction",
