@@ -4,6 +4,11 @@
 #include <bit>
 #include <cstring>
 #include <limits>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace esi {
 
@@ -48,20 +53,40 @@ std::size_t count_newlines(std::string_view text) {
 
 SourceText::SourceText(std::string path, std::string utf8) : path_(std::move(path)), text_(std::move(utf8)) {}
 
+namespace {
+
+// Appends the offset after every '\n' in text[0, end) to `starts`. Lines are short (25 to 40
+// bytes in vendor files), so a memchr call per line spent most of its ~55 instructions on the
+// call and its set-up; comparing 16 bytes at a time and taking the newlines from the bit mask
+// costs a few instructions per block plus two per line.
+void append_line_starts(const char* text, std::size_t end, std::vector<std::uint32_t>& starts) {
+    std::size_t i = 0;
+#if defined(__SSE2__)
+    const __m128i newline = _mm_set1_epi8('\n');
+    for (; i + 16 <= end; i += 16) {
+        auto mask = static_cast<unsigned>(
+            _mm_movemask_epi8(_mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(text + i)), newline)));
+        while (mask != 0) {
+            starts.push_back(static_cast<std::uint32_t>(i + static_cast<std::size_t>(__builtin_ctz(mask)) + 1));
+            mask &= mask - 1;
+        }
+    }
+#endif
+    for (; i < end; ++i)
+        if (text[i] == '\n') starts.push_back(static_cast<std::uint32_t>(i + 1));
+}
+
+}  // namespace
+
 const std::vector<SourceText::LineStart>& SourceText::line_starts() const {
+    static_assert(std::is_same_v<LineStart, std::uint32_t>);
     std::call_once(index_once_, [this] {
         // Vendor files have lines of 25 to 40 bytes; the index is trimmed to size afterwards, as
         // it lives as long as the document.
         line_starts_.reserve(text_.size() / 24 + 1);
         line_starts_.push_back(0);
-        const char* begin = text_.data();
-        const char* end = begin + std::min<std::size_t>(text_.size(), std::numeric_limits<LineStart>::max());
-        for (const char* p = begin; p < end;) {
-            const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-            if (!nl) break;
-            p = static_cast<const char*>(nl) + 1;
-            line_starts_.push_back(static_cast<LineStart>(p - begin));
-        }
+        const std::size_t end = std::min<std::size_t>(text_.size(), std::numeric_limits<LineStart>::max());
+        append_line_starts(text_.data(), end, line_starts_);
         line_starts_.shrink_to_fit();
     });
     return line_starts_;
