@@ -113,17 +113,24 @@ SourcePos SourceText::position_of(std::size_t offset) const {
 
 namespace {
 
-// Code points in text[begin, offset). Before an element there are usually a few tabs of
-// indentation: up to eight bytes are checked for non-ASCII with one load of the eight bytes
-// ending at the offset (it may reach before `begin`, never before the text), which saves the
-// byte loop of count_code_points for them.
+// Code points in text[begin, offset). Before an element there is indentation, and after the
+// previous element on its line a few bytes of text or markup: the span is checked for non-ASCII
+// eight bytes at a time here, inline, the last bytes with one load of the eight bytes ending at
+// the offset (it may reach before `begin`, never before the text). Only a span that holds
+// non-ASCII is counted by count_code_points; a call per position cost more than the count.
 std::size_t columns_between(const std::string& text, std::size_t begin, std::size_t offset) {
     const std::size_t n = offset - begin;
     if (n == 0) return 0;
     if constexpr (std::endian::native == std::endian::little) {
-        if (n <= 8 && offset >= 8) {
-            const std::uint64_t last_n_bytes = ~std::uint64_t{0} << (64 - 8 * n);  // the highest addresses
-            if ((load8(text.data() + offset - 8) & last_n_bytes & high_bits) == 0) return n;
+        if (offset >= 8) {
+            const char* p = text.data() + begin;
+            const char* const end = text.data() + offset;
+            std::uint64_t any_high = 0;
+            for (; end - p > 8; p += 8) any_high |= load8(p) & high_bits;
+            const auto rest = static_cast<unsigned>(end - p);  // 1..8 bytes
+            const std::uint64_t last_rest_bytes = ~std::uint64_t{0} << (64 - 8 * rest);  // the highest addresses
+            any_high |= load8(end - 8) & last_rest_bytes & high_bits;
+            if (any_high == 0) return n;
         }
     }
     return count_code_points(std::string_view(text).substr(begin, n));
