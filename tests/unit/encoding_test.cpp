@@ -97,6 +97,22 @@ TEST(SourceText, PositionsCountCodePointsAndLines) {
     EXPECT_EQ(esi::count_code_points("\xE2\x82\xAC" "abcdefghijk\xC3\xA4"), 13u);
 }
 
+TEST(SourceText, CodePointsOfEverySpanAgreeWithAByteCount) {
+    // Every span of a text mixing 1- to 4-byte characters, so that the eight-byte blocks and the
+    // masked last load start and end inside characters and at every distance from the text's start.
+    std::string text;
+    const std::string pieces[] = {"a", "\xC3\xA4", "\xE2\x82\xAC", "\xF0\x9F\x98\x80", "bcdefghij", "\t"};
+    for (int i = 0; i < 40; ++i) text += pieces[(i * 5 + i / 4) % 6];
+    for (std::size_t begin = 0; begin < text.size(); ++begin) {
+        for (std::size_t length = 0; begin + length <= text.size(); ++length) {
+            const std::string_view span = std::string_view(text).substr(begin, length);
+            std::size_t expected = 0;
+            for (const char c : span) expected += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+            ASSERT_EQ(esi::count_code_points(span), expected) << begin << "+" << length;
+        }
+    }
+}
+
 TEST(SourceText, CursorAgreesWithTheLineIndexAtEveryOffset) {
     // Lines of mixed length with CRLF, 2-, 3- and 4-byte characters at word boundaries, a
     // newline as the last byte and runs longer than one 8-byte word without any newline.

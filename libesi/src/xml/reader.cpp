@@ -28,7 +28,13 @@ void Reader::verbatim(XmlElement& e, const pugi::xml_node n, std::string_view af
     e.name = n.name();
     e.after = after;
     e.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) e.attributes.push_back({a.name(), a.value()});
+    if (pugi::xml_attribute first = n.first_attribute()) {
+        // Counted first: grown one by one, the vector moved its strings at every doubling.
+        std::size_t count = 0;
+        for (pugi::xml_attribute a = first; a; a = a.next_attribute()) ++count;
+        e.attributes.reserve(count);
+        for (pugi::xml_attribute a = first; a; a = a.next_attribute()) e.attributes.push_back({a.name(), a.value()});
+    }
     if (depth >= options_.max_verbatim_depth) {
         if (!depth_reported_) {
             report(Severity::error, "xml-nesting-depth",
@@ -54,7 +60,11 @@ void Reader::verbatim(XmlElement& e, const pugi::xml_node n, std::string_view af
     }
     // parse_embed_pcdata stores the text that comes before any child element in the
     // element's own value, not as a child: it is the start of the text (mixed content).
-    if (n.value()[0] != '\0') e.text.insert(0, n.value());
+    // Most kept elements hold only that text: it is assigned, not inserted before nothing.
+    if (const char* embedded = n.value(); embedded[0] != '\0') {
+        if (e.text.empty()) e.text.assign(embedded);
+        else e.text.insert(0, embedded);
+    }
 }
 
 bool Reader::read_image(Images& images, const pugi::xml_node c, std::string_view name) {
