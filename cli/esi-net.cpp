@@ -89,12 +89,23 @@ int run_build(const std::string& network_path, const std::string& output_dir, co
     }
     if (std::find(kinds->begin(), kinds->end(), esi::net::OutputKind::ros2) != kinds->end()) {
         esi::net::Ros2Output ros2 = esi::net::ros2_outputs(*built.network, output_dir);
+        // Asked for by name, a ROS 2 configuration the driver cannot take stops the run. Only
+        // implied by the default set, it must not cost the user the ENI, IgH and lcec files: the
+        // ros2 files are left out, and the findings say why as warnings.
+        const bool asked_for = !only.empty();
+        const bool left_out = ros2.diagnostics.has_errors() && !asked_for;
+        if (left_out)
+            for (esi::Diagnostic& d : ros2.diagnostics.items())
+                if (d.severity == esi::Severity::error) d.severity = esi::Severity::warning;
         print(ros2.diagnostics);
         if (ros2.diagnostics.has_errors()) {
             std::cerr << "esi-net build: " << network_path << ": nothing written (leave ros2 out with --only)\n";
             return exit_findings;
         }
-        std::move(ros2.files.begin(), ros2.files.end(), std::back_inserter(files));
+        if (left_out)
+            std::cerr << "esi-net build: " << network_path << ": ros2 left out (ethercat_driver_ros2 cannot take this network; --only ros2 makes it an error)\n";
+        else
+            std::move(ros2.files.begin(), ros2.files.end(), std::back_inserter(files));
     }
     // One output set, as the other tools write theirs: under the directory's lock, replaced whole
     // or not at all.

@@ -76,3 +76,26 @@ TEST(EsiNetRound2Cli, CheckTakesIghSlaveListsAsIdentities) {
 }
 
 }  // namespace
+
+// An EL1252 keeps its latch PDO on a second input SM, which ethercat_driver_ros2 cannot assign.
+// Implied by the default output set, that must not cost the user the ENI and the rest; asked for
+// by name it stops the run.
+TEST(EsiNetRound2Cli, Ros2ThatCannotBeWrittenIsLeftOutOfTheDefaultSetOnly) {
+    ESI_REQUIRE_CORPUS();
+    esi::test::TempDir dir;
+    const std::string tool = esi::test::tool("esi-net").string();
+    const std::string esi = (esi::test::corpus_dir() / "esi").string();
+    esi::test::write_text(dir / "net.yaml", "slaves:\n  - { name: Coupler, device: EK1100 }\n  - { name: Latch, product_code: 0x04E43052, revision: 0x00120000 }\n");
+    auto r = esi::test::run({tool, "--no-cache", "build", (dir / "net.yaml").string(), "--esi", esi, "-o", (dir / "all").string()});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("warning: slave 'Latch'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("ros2 left out"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "all" / "network.xml"));
+    EXPECT_TRUE(fs::exists(dir / "all" / "igh_config.c"));
+    EXPECT_FALSE(fs::exists(dir / "all" / "ros2"));
+
+    r = esi::test::run({tool, "--no-cache", "build", (dir / "net.yaml").string(), "--esi", esi, "-o", (dir / "named").string(), "--only", "eni,ros2"});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("error: slave 'Latch'"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "named"));
+}
