@@ -1,5 +1,6 @@
 // Rules of the od area about the shape of the offline Dictionary as a whole: the type of the
 // entry count every record and array starts with, and how many Dictionaries a device has.
+#include <set>
 #include <string>
 
 #include "check/areas.hpp"
@@ -17,16 +18,24 @@ bool is_unsigned8(std::string_view type) { return type == "USINT" || type == "UI
 
 // CiA 301 before 4.02 had one object whose sub-index 0 is not a count: 0x1004 'Number of PDOs
 // supported', an UNSIGNED32 with the RxPDOs in its low and the TxPDOs in its high 16 bits (Beckhoff
-// AX2000-B110 still describes it so). Its type is not judged.
+// AX2000-B110 still describes it so).
 constexpr std::uint32_t number_of_pdos_supported = 0x1004;
 
+// The manufacturer-specific area (ETG.1000.6, CiA 301): the vendor defines these objects, and some
+// define sub-index 0 as their first element (STÖBER's array parameters such as A252 at 0x20FC, by
+// the STÖBER EtherCAT manuals). Only objects outside it are held to the count.
+bool manufacturer_specific(std::uint32_t index) { return index >= 0x2000 && index <= 0x5FFF; }
+
 void check_subindex0_type(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document))
+    for (const auto& scope : dictionary_scopes(document)) {
+        // The DataTypes that objects of the standardised areas use.
+        std::set<std::string_view, std::less<>> standard_types;
+        for (const auto& object : scope.dictionary->objects)
+            if (!manufacturer_specific(object.index) && object.index != number_of_pdos_supported)
+                standard_types.insert(trim(object.type));
         for (const auto& type : scope.dictionary->data_types) {
             // Only records and array holders (more than one SubItem) have an entry count at sub-index 0.
-            if (type.sub_items.size() < 2) continue;
-            const Object* legacy = scope.dictionary->find_object(number_of_pdos_supported);
-            if (legacy && trim(legacy->type) == type.name) continue;
+            if (type.sub_items.size() < 2 || !standard_types.count(type.name)) continue;
             for (const auto& item : type.sub_items) {
                 if (item.subindex != 0u) continue;
                 const std::string_view name = trim(item.type);
@@ -38,6 +47,7 @@ void check_subindex0_type(const EsiDocument& document, RuleContext& context) {
                 break;
             }
         }
+    }
 }
 
 constexpr Rule od_subindex0_type{
@@ -51,7 +61,9 @@ constexpr Rule od_subindex0_type{
         "aborts an SDO download whose length differs from the entry's (ABORT_TYPEMISMATCH, 0x06070010), so a "
         "start-up value sized by a UINT sub-index 0 of the description is refused. The device serves its own "
         "sub-index 0 either way, so an offline Dictionary that says UINT (UTRIO UC20-RTU-EC-A declares 31 records so) "
-        "misleads tools, not the device: a warning.",
+        "misleads tools, not the device: a warning. Objects of the manufacturer-specific area (0x2000-0x5FFF) are "
+        "not judged, since a vendor may define their sub-index 0 as a first element (STÖBER's array parameters), nor "
+        "0x1004, whose sub-index 0 was the UNSIGNED32 'Number of PDOs supported' before CiA 301 4.02.",
     .bad_example = "<SubItem><SubIdx>0</SubIdx><Name>Number of entries</Name><Type>UINT</Type><BitSize>16</BitSize>…",
     .good_example = "<SubItem><SubIdx>0</SubIdx><Name>Number of entries</Name><Type>USINT</Type><BitSize>8</BitSize>…",
     .check = check_subindex0_type,
