@@ -186,6 +186,19 @@ TEST(SafeFixRemovals, AnUndeclaredPrefixIsReportedOnceAndOnlyXsiIsFixed) {
     EXPECT_EQ(count_rule(broken, "xml-undeclared-prefix"), 0u);
 }
 
+TEST(SafeFixRemovals, APrefixDeclaredOnlyElsewhereIsUndeclaredHere) {
+    std::string text = sample();
+    // Text that looks like a prefix (a colon between words) is no name.
+    replace_once(text, "<Name LcId=\"1033\">Example Automation GmbH</Name>",
+                 "<Name LcId=\"1033\">Example Automation GmbH</Name><!-- note:kept --><URL>see: http://example.com x:y</URL>");
+    EXPECT_EQ(count_rule(text, "xml-undeclared-prefix"), 0u);
+    // Declared on the Vendor, used on Descriptions: out of the declaration's scope.
+    replace_once(text, "<Vendor>", "<Vendor xmlns:abc=\"urn:example\" abc:note=\"1\">");
+    EXPECT_EQ(count_rule(text, "xml-undeclared-prefix"), 0u);
+    replace_once(text, "<Descriptions>", "<Descriptions abc:note=\"2\">");
+    EXPECT_EQ(count_rule(text, "xml-undeclared-prefix"), 1u);
+}
+
 TEST(SafeFixRemovals, FixedFilesStaySchemaValid) {
     ESI_REQUIRE_CORPUS();
     const auto xsd = esi::test::shared_dir() / "corpus" / "schema" / "v1.17_siitool-2022" / "EtherCATInfo.xsd";

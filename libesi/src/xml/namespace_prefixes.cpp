@@ -64,11 +64,43 @@ private:
     std::set<std::string, std::less<>> reported_;
 };
 
+bool name_start(char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return (u >= 'A' && u <= 'Z') || (u >= 'a' && u <= 'z') || u == '_' || u >= 0x80;
+}
+
+bool name_char(char c) { return name_start(c) || (c >= '0' && c <= '9') || c == '-' || c == '.'; }
+
+// Whether every prefixed name the text may hold uses a prefix that the root declares, which then
+// holds everywhere: the walk over every element (most of this check's cost) is not needed. A
+// prefixed name in markup follows '<' (an element) or a blank (an attribute) and has a name
+// character right after its colon; text such as "Hinweis: …" seldom looks like that, and when it
+// does, the walk decides.
+bool only_prefixes_of_the_root(std::string_view text, pugi::xml_node root) {
+    std::set<std::string_view, std::less<>> declared_on_root;
+    for (const pugi::xml_attribute a : root.attributes()) {
+        const std::string_view name = a.name();
+        if (name.starts_with("xmlns:")) declared_on_root.insert(name.substr(6));
+    }
+    for (std::size_t colon = text.find(':'); colon != std::string_view::npos; colon = text.find(':', colon + 1)) {
+        if (colon + 1 >= text.size() || !name_start(text[colon + 1])) continue;
+        std::size_t start = colon;
+        while (start > 0 && name_char(text[start - 1])) --start;
+        if (start == colon || start == 0 || !name_start(text[start])) continue;
+        const char before = text[start - 1];
+        if (before != '<' && before != ' ' && before != '\t' && before != '\n' && before != '\r') continue;
+        const std::string_view prefix = text.substr(start, colon - start);
+        if (prefix != "xml" && prefix != "xmlns" && !declared_on_root.count(prefix)) return false;
+    }
+    return true;
+}
+
 }  // namespace
 
 void report_undeclared_prefixes(const SourceText& source, const pugi::xml_document& parsed, const char* parse_buffer,
                                 Diagnostics& diagnostics) {
     const pugi::xml_node root = parsed.document_element();
+    if (only_prefixes_of_the_root(source.text(), root)) return;
     PrefixCheck check(source, parse_buffer, root, diagnostics);
     for (pugi::xml_node n = root; n;) {
         if (n.type() == pugi::node_element) {
