@@ -108,6 +108,20 @@ TEST(SafeFixRemovals, AnAttributeOnALineOfItsOwnTakesTheLine) {
     expect_fixed(broken, "deprecated-obsolete", 1, expected);
 }
 
+TEST(SafeFixRemovals, EveryRemovableObsoleteAttributeGoes) {
+    const std::string good = sample();
+    std::string broken = good;
+    replace_once(broken, "RevisionNo=\"#x00010000\">", "RevisionNo=\"#x00010000\" TcSmClass=\"x\" DownloadModuleList=\"y\">");
+    replace_once(broken, "Enable=\"1\">MBoxOut", "Enable=\"1\" Watchdog=\"false\" FixedAssignment=\"true\">MBoxOut");
+    const std::string coe = "CompleteAccess=\"false\"/>";
+    std::string with_cmd = good;
+    replace_once(with_cmd, coe, "CompleteAccess=\"false\"><InitCmd><Transition>PS</Transition><Index>#x1C12</Index>"
+                                "<SubIndex>0</SubIndex><Data>00</Data></InitCmd></CoE>");
+    replace_once(broken, coe, "CompleteAccess=\"false\"><InitCmd Fixed=\"true\"><Transition>PS</Transition><Index>#x1C12</Index>"
+                              "<SubIndex>0</SubIndex><Data>00</Data></InitCmd></CoE>");
+    expect_fixed(broken, "deprecated-obsolete", 5, with_cmd);
+}
+
 TEST(SafeFixRemovals, WhatCarriesMeaningIsNotRemoved) {
     // Watchdog="true" asks for ControlByte bit 6 (a change of another value), Profile@Channel for
     // ChannelCount: the finding stays without a fix.
