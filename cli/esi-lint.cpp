@@ -79,6 +79,46 @@ std::optional<int> fix_files(const esi::LintReport& report, const esi::LintOptio
     return std::nullopt;
 }
 
+// --fix - and --diff -: standard input in, the fixed file (or the diff) on standard output, as a
+// filter in an editor or a pipe. Standard output is the file, so what was fixed, what could not
+// be and the findings left go to standard error; the exit code is that of the findings left
+// (--fix) or 1 when there is something to fix (--diff).
+int fix_stdin(const esi::LintOptions& options, bool show_diff, const std::string& fail_on) {
+    std::string error;
+    const std::optional<std::string> bytes = esi::read_stdin_bytes(error);
+    if (!bytes) {
+        std::cerr << "<stdin>: error: cannot read: " << error << " [io-error]\n";
+        return exit_usage;
+    }
+    esi::EffectiveConfig config;
+    std::optional<std::filesystem::path> config_path = options.config_path;
+    if (!config_path) config_path = esi::find_config_for(std::filesystem::current_path() / "stdin.xml");
+    if (config_path) {
+        const esi::ConfigResult loaded = esi::load_lint_config(*config_path);
+        for (const auto& d : loaded.diagnostics) std::cerr << esi::format_diagnostic(d);
+        if (!loaded.config) return exit_usage;
+        config = esi::effective_config(*loaded.config, "stdin.xml");
+    }
+    const esi::FixedText fixed = esi::apply_fixes(*bytes, "<stdin>", config);
+    if (!fixed.refused.empty()) std::cerr << "<stdin>: note: not fixed: " << fixed.refused << "\n";
+    const char* plural = fixed.applied == 1 ? "" : "s";
+    if (show_diff) {
+        if (fixed.applied) esi::cli::write_stdout(esi::unified_diff(fixed.original, fixed.edits, "<stdin>"));
+        std::cerr << "esi-lint: " << fixed.applied << " fixable finding" << plural << " in <stdin>\n";
+        return fixed.applied ? exit_findings : exit_ok;
+    }
+    esi::cli::write_stdout(fixed.bytes);
+    std::cerr << "esi-lint: fixed " << fixed.applied << " finding" << plural << " in <stdin>\n";
+    const esi::FileReport left = esi::lint_bytes(fixed.bytes, "<stdin>", config, options.xsd_dir);
+    int code = exit_ok;
+    for (const auto& d : left.diagnostics) {
+        std::cerr << esi::format_diagnostic(d);
+        if (d.rule == "io-error") code = exit_usage;
+        else if (code == exit_ok && reaches(d.severity, fail_on)) code = exit_findings;
+    }
+    return code;
+}
+
 }  // namespace
 
 namespace {
@@ -130,7 +170,8 @@ int run_tool(int argc, char** argv) {
     app.add_option("--write-baseline", write_baseline_path, "write every finding of this run to a baseline file")
         ->type_name("FILE");
     app.add_flag("--statistics", statistics, "print the number of findings per rule and severity instead of the findings");
-    app.add_flag("--fix", fix, "apply the safe fixes (rules marked [*] in --list-rules) to the files, then report what is left");
+    app.add_flag("--fix", fix, "apply the safe fixes (rules marked [*] in --list-rules) to the files, then report what is left; with - alone, "
+                 "write the fixed standard input to standard output and the findings left to standard error");
     app.add_flag("--diff", show_diff, "print the safe fixes as a unified diff instead of applying them");
     esi::cli::add_color_option(app, color, "text format output");
     esi::cli::add_version_flag(app, "esi-lint");
@@ -166,8 +207,10 @@ int run_tool(int argc, char** argv) {
         std::cerr << "esi-lint: --statistics prints text or json\n";
         return exit_usage;
     }
-    if ((fix || show_diff) && std::find(paths.begin(), paths.end(), "-") != paths.end()) {
-        std::cerr << "esi-lint: --fix and --diff work on files, not on standard input\n";
+    const bool fix_stdin_only = (fix || show_diff) && std::find(paths.begin(), paths.end(), "-") != paths.end();
+    if (fix_stdin_only && paths.size() > 1) {
+        // Standard output carries the one fixed input; files beside it would have nowhere to go.
+        std::cerr << "esi-lint: --fix - and --diff - take standard input alone, no other path\n";
         return exit_usage;
     }
     std::optional<esi::Baseline> baseline;
@@ -186,6 +229,8 @@ int run_tool(int argc, char** argv) {
     if (!xsd.empty()) options.xsd_dir = xsd;
     options.jobs = jobs;
     options.exclude = exclude;
+
+    if (fix_stdin_only) return fix_stdin(options, show_diff, fail_on);
 
     esi::LintReport report;
     std::vector<std::filesystem::path> files;

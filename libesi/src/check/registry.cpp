@@ -22,6 +22,7 @@ std::vector<Rule> build_catalogue() {
     rules::add_pdo_default(rules);
     rules::add_od_type(rules);
     rules::add_od_object(rules);
+    rules::add_od_structure(rules);
     rules::add_mailbox(rules);
     rules::add_initcmd(rules);
     rules::add_dc(rules);
@@ -75,6 +76,13 @@ void RuleContext::report(SourcePos pos, std::string message, std::vector<Diagnos
 
 void RuleContext::report(SourcePos pos, std::string message, std::optional<Fix> fix) {
     sink_.emplace(severity_, std::string(rule_.id), std::move(message), document_.path, pos).fix = std::move(fix);
+}
+
+void RuleContext::report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes, std::optional<Fix> fix) {
+    Diagnostic& d = sink_.emplace(severity_, std::string(rule_.id), std::move(message), document_.path, pos);
+    for (auto& note : notes) note.message = bounded_message(std::move(note.message));
+    d.notes = std::move(notes);
+    d.fix = std::move(fix);
 }
 
 }  // namespace esi

@@ -10,6 +10,7 @@
 
 #include "check/areas.hpp"
 #include "check/queries.hpp"
+#include "check/source_edit.hpp"
 #include "esi/number.hpp"
 
 namespace esi::rules {
@@ -138,7 +139,8 @@ void check_duplicate(const EsiDocument& document, RuleContext& context) {
             const DcOpMode* other = nullptr;
             if (mode.name.empty() || name_clash(*device->dc, mode, other) != NameClash::duplicate) continue;
             context.report(mode.pos, "Dc OpMode '" + mode.name + "' repeats an earlier OpMode of this device word for word",
-                           {context.note(other->pos, "the same OpMode")});
+                           {context.note(other->pos, "the same OpMode")},
+                           remove_identical_copy(document, other->pos, mode.pos, "remove the identical copy of the OpMode"));
         }
     }
 }
@@ -155,6 +157,7 @@ constexpr Rule dc_opmode_duplicate{
     .bad_example = "<OpMode><Name>DcSync</Name><AssignActivate>#x0730</AssignActivate>…</OpMode> twice",
     .good_example = "<OpMode><Name>DcSync</Name><AssignActivate>#x0730</AssignActivate>…</OpMode> once",
     .check = check_duplicate,
+    .fix = "removes the repeat when it is a byte-identical copy of the first OpMode",
 };
 
 // ---- dc-assign-activate ---------------------------------------------------------------------

@@ -8,6 +8,7 @@
 
 #include "check/areas.hpp"
 #include "check/queries.hpp"
+#include "check/source_edit.hpp"
 
 namespace esi::rules {
 
@@ -60,8 +61,9 @@ constexpr Rule deprecated_image16x14{
 void check_unique_name(const EsiDocument& document, RuleContext& context) {
     for (const auto& info : document.infos)
         if (info.vendor && info.vendor->unique_name)
-            context.report(info.vendor->pos, "Vendor@UniqueName ('" + *info.vendor->unique_name +
-                                                 "') is obsolete; the vendor is identified by Vendor/Id");
+            context.report(info.vendor->pos,
+                           "Vendor@UniqueName ('" + *info.vendor->unique_name + "') is obsolete; the vendor is identified by Vendor/Id",
+                           remove_attribute(document, info.vendor->pos, "UniqueName", "remove Vendor@UniqueName"));
 }
 
 constexpr Rule deprecated_vendor_unique_name{
@@ -74,6 +76,7 @@ constexpr Rule deprecated_vendor_unique_name{
     .bad_example = "<Vendor UniqueName=\"ExampleGmbH\"><Id>#x00000E4A</Id>...</Vendor>",
     .good_example = "<Vendor><Id>#x00000E4A</Id>...</Vendor>",
     .check = check_unique_name,
+    .fix = "removes the attribute (no tool reads it; the vendor is its Id)",
 };
 
 // ---- deprecated-tc-cfg-mode-safe-op ---------------------------------------------------------
@@ -81,9 +84,11 @@ constexpr Rule deprecated_vendor_unique_name{
 void check_tc_cfg_mode_safe_op(const EsiDocument& document, RuleContext& context) {
     for (const Device* device : all_devices(document))
         if (device->type.tc_cfg_mode_safe_op)
-            context.report(device->type.pos, device_label(*device) +
-                                                 ": Type@TcCfgModeSafeOp is obsolete (a TwinCAT configuration hint "
-                                                 "that the schema no longer defines); remove it");
+            context.report(device->type.pos,
+                           device_label(*device) +
+                               ": Type@TcCfgModeSafeOp is obsolete (a TwinCAT configuration hint that the schema no longer "
+                               "defines); remove it",
+                           remove_attribute(document, device->type.pos, "TcCfgModeSafeOp", "remove Type@TcCfgModeSafeOp"));
 }
 
 constexpr Rule deprecated_tc_cfg_mode_safe_op{
@@ -96,6 +101,7 @@ constexpr Rule deprecated_tc_cfg_mode_safe_op{
     .bad_example = "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\" TcCfgModeSafeOp=\"true\">EX-DIO-8</Type>",
     .good_example = "<Type ProductCode=\"#x1001\" RevisionNo=\"#x10000\">EX-DIO-8</Type>",
     .check = check_tc_cfg_mode_safe_op,
+    .fix = "removes the attribute",
 };
 
 // ---- deprecated-profile-channel -------------------------------------------------------------
@@ -150,7 +156,8 @@ void check_sm_one_byte_mode(const EsiDocument& document, RuleContext& context) {
     for (const Device* device : all_devices(document))
         for (std::size_t n = 0; n < device->sms.size(); ++n)
             if (device->sms[n].one_byte_mode)
-                context.report(device->sms[n].pos, "SM" + std::to_string(n) + ": Sm@OneByteMode is obsolete; remove it");
+                context.report(device->sms[n].pos, "SM" + std::to_string(n) + ": Sm@OneByteMode is obsolete; remove it",
+                               remove_attribute(document, device->sms[n].pos, "OneByteMode", "remove Sm@OneByteMode"));
 }
 
 constexpr Rule deprecated_sm_one_byte_mode{
@@ -164,12 +171,19 @@ constexpr Rule deprecated_sm_one_byte_mode{
         "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\" OneByteMode=\"false\">MBoxOut</Sm>",
     .good_example = "<Sm StartAddress=\"#x1000\" ControlByte=\"#x26\" DefaultSize=\"128\" Enable=\"1\">MBoxOut</Sm>",
     .check = check_sm_one_byte_mode,
+    .fix = "removes the attribute",
 };
 
 // ---- deprecated-obsolete --------------------------------------------------------------------
 
-void report_obsolete(RuleContext& context, SourcePos pos, const std::string& what, std::string_view advice) {
-    context.report(pos, what + " is marked obsolete in the ETG schema; " + std::string(advice));
+// `removable`: the attribute of that name on the element at `pos` is one no tool reads and that
+// carries nothing another element must take over, so removing it is a safe fix.
+void report_obsolete(RuleContext& context, SourcePos pos, const std::string& what, std::string_view advice,
+                     std::string_view removable = {}) {
+    std::optional<Fix> fix;
+    if (!removable.empty())
+        fix = remove_attribute(context.document(), pos, removable, "remove the obsolete attribute " + std::string(removable));
+    context.report(pos, what + " is marked obsolete in the ETG schema; " + std::string(advice), std::move(fix));
 }
 
 void check_coe_obsolete(const CoeProtocol& coe, const std::string& owner, RuleContext& context) {
@@ -180,7 +194,7 @@ void check_coe_obsolete(const CoeProtocol& coe, const std::string& owner, RuleCo
         if (e.name == "Object")
             report_obsolete(context, e.pos, owner + ": CoE/Object", "write start-up values as CoE InitCmd elements");
     for (const auto& cmd : coe.init_cmds)
-        if (cmd.fixed) report_obsolete(context, cmd.pos, owner + ": InitCmd@Fixed", "remove it");
+        if (cmd.fixed) report_obsolete(context, cmd.pos, owner + ": InitCmd@Fixed", "remove it", "Fixed");
 }
 
 void check_obsolete(const EsiDocument& document, RuleContext& context) {
@@ -189,14 +203,16 @@ void check_obsolete(const EsiDocument& document, RuleContext& context) {
             const std::string owner = device_label(device);
             for (const char* attribute : {"TcSmClass", "DownloadModuleList"})
                 if (device.type.extras.attribute(attribute))
-                    report_obsolete(context, device.type.pos, owner + ": Type@" + attribute, "remove it");
+                    report_obsolete(context, device.type.pos, owner + ": Type@" + attribute, "remove it", attribute);
             for (std::size_t n = 0; n < device.sms.size(); ++n) {
                 const SyncManager& sm = device.sms[n];
                 if (sm.watchdog)
                     report_obsolete(context, sm.pos, "SM" + std::to_string(n) + ": Sm@Watchdog",
                                     *sm.watchdog ? "set the watchdog trigger with ControlByte bit 6 (#x64 instead of #x24)"
-                                                 : "remove it; ControlByte bit 6 alone decides the watchdog trigger");
-                if (sm.fixed_assignment) report_obsolete(context, sm.pos, "SM" + std::to_string(n) + ": Sm@FixedAssignment", "remove it");
+                                                 : "remove it; ControlByte bit 6 alone decides the watchdog trigger",
+                                    *sm.watchdog ? "" : "Watchdog");
+                if (sm.fixed_assignment)
+                    report_obsolete(context, sm.pos, "SM" + std::to_string(n) + ": Sm@FixedAssignment", "remove it", "FixedAssignment");
             }
             if (device.mailbox && device.mailbox->coe) check_coe_obsolete(*device.mailbox->coe, owner, context);
             if (device.dc) {
@@ -231,6 +247,8 @@ constexpr Rule deprecated_obsolete{
     .bad_example = "<CoE DS402Channels=\"1\" PdoAssign=\"true\"/>",
     .good_example = "<CoE PdoAssign=\"true\"/>",
     .check = check_obsolete,
+    .fix = "removes Type@TcSmClass, Type@DownloadModuleList, Sm@FixedAssignment, Sm@Watchdog=\"false\" and InitCmd@Fixed "
+           "(the other items carry something to move elsewhere)",
 };
 
 }  // namespace

@@ -319,6 +319,53 @@ constexpr Rule eeprom_category{
     .check = check_category,
 };
 
+// ---- eeprom-physics-port --------------------------------------------------------------------
+
+// The SII General category has a 4-bit port type for each of 4 ports (ETG.2010: 0 not used,
+// 1 MII, 2 reserved, 3 E-Bus); the ESI names them with one letter each.
+constexpr std::size_t sii_ports = 4;
+
+// B is no letter of ETG.2000's pattern, but the Beckhoff schemas of 2011 and before allowed it
+// ([Y,K, ,B]) and Beckhoff's own files of that time use it (EK1200 "BK"): a file valid for its
+// schema is not reported for it.
+bool is_port_letter(char letter) { return letter == 'Y' || letter == 'H' || letter == 'K' || letter == ' ' || letter == 'B'; }
+
+void check_physics_port(const EsiDocument& document, RuleContext& context) {
+    for (const Device* device : all_devices(document)) {
+        const std::string& physics = device->physics;
+        if (physics.size() > sii_ports)
+            context.report(device->pos, device_label(*device) + ": Physics \"" + excerpt(physics) + "\" names " +
+                                            std::to_string(physics.size()) + " ports; the SII General category has room for " +
+                                            std::to_string(sii_ports) + ", so the others are lost");
+        for (std::size_t port = 0; port < physics.size() && port < sii_ports; ++port)
+            if (!is_port_letter(physics[port])) {
+                context.report(device->pos, device_label(*device) + ": Physics \"" + excerpt(physics) + "\" gives port " +
+                                                std::to_string(port) + " the letter '" + std::string(1, physics[port]) +
+                                                "', which is not Y, H (MII), K (E-Bus) or a space (none) in any ETG schema; "
+                                                "the SII port type is written as not used");
+                break;  // one finding per device
+            }
+    }
+}
+
+constexpr Rule eeprom_physics_port{
+    .id = "eeprom-physics-port",
+    .default_severity = Severity::warning,
+    .summary = "Device@Physics with a letter other than Y, H, K or space, or more than 4 ports",
+    .rationale =
+        "Physics names each port's physical layer, one letter per port: Y or H for MII (100BASE-TX), K for E-Bus "
+        "(LVDS), a space for no port (ETG.2000 PhysicsType, pattern [Y,K,H, ]{0,4}). SII builders turn the letters into "
+        "the 4-bit port types of the General category (ETG.2010 PhysicalPort: not used, MII, E-Bus), which the "
+        "conformance test compares with the description (CTT TF-1300 1-3 'ESI Port Type Consistency'). Another "
+        "letter has no port type: esi-sii build writes the port as not used (sii-physics), so the image and the "
+        "description disagree; a fifth port has no field at all. Masters take the topology from the ESC's DL status, "
+        "not from these fields: a warning. B, which the Beckhoff schemas of 2011 and before allowed ([Y,K, ,B]) and "
+        "their files of that time use (EK1200 'BK'), is not reported. Without --xsd no other rule sees the letters.",
+    .bad_example = "<Device Physics=\"KX\">",
+    .good_example = "<Device Physics=\"KK\">",
+    .check = check_physics_port,
+};
+
 }  // namespace
 
 void add_eeprom(std::vector<Rule>& out) {
@@ -332,6 +379,7 @@ void add_eeprom(std::vector<Rule>& out) {
         eeprom_boot_strap,
         eeprom_boot_mailbox_overlap,
         eeprom_category,
+        eeprom_physics_port,
     });
 }
 

@@ -10,6 +10,7 @@
 #include "check/od_type_index.hpp"
 #include "check/od_values.hpp"
 #include "check/rule_cache.hpp"
+#include "check/source_edit.hpp"
 #include "esi/model/object_layout.hpp"
 
 namespace esi::rules {
@@ -263,7 +264,8 @@ void check_duplicate_object(const EsiDocument& document, RuleContext& context) {
             const auto [it, inserted] = seen.emplace(object.index, &object);
             if (inserted) continue;
             context.report(object.index_pos, "Object " + object_address(object.index) + " is declared twice in this Dictionary",
-                           {context.note(it->second->index_pos, "first declared here")});
+                           {context.note(it->second->index_pos, "first declared here")},
+                           remove_identical_copy(document, it->second->pos, object.pos, "remove the identical copy of the Object"));
         }
     }
 }
@@ -279,6 +281,7 @@ constexpr Rule od_duplicate_object{
     .bad_example = "<Object><Index>#x2000</Index>…</Object><Object><Index>#x2000</Index>…</Object>",
     .good_example = "<Object><Index>#x2000</Index>…</Object><Object><Index>#x2001</Index>…</Object>",
     .check = check_duplicate_object,
+    .fix = "removes the second Object when it is a byte-identical copy of the first",
 };
 
 // ---- od-flags-value -------------------------------------------------------------------------

@@ -13,6 +13,7 @@
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
 #include "check/rule_cache.hpp"
+#include "check/source_edit.hpp"
 #include "esi/data_types.hpp"
 #include "esi/number.hpp"
 
@@ -391,7 +392,8 @@ void check_duplicate_datatype(const EsiDocument& document, RuleContext& context)
             if (!first || first == &type) continue;
             context.report(type.name_pos.line ? type.name_pos : type.pos,
                            "DataType " + type.name + " is defined twice in this Dictionary; masters use one of the definitions",
-                           {context.note(first->name_pos.line ? first->name_pos : first->pos, "first defined here")});
+                           {context.note(first->name_pos.line ? first->name_pos : first->pos, "first defined here")},
+                           remove_identical_copy(document, first->pos, type.pos, "remove the identical copy of the DataType"));
         }
     }
 }
@@ -409,6 +411,7 @@ constexpr Rule od_duplicate_datatype{
     .good_example =
         "<DataType><Name>DT6000</Name><BitSize>24</BitSize>…</DataType><DataType><Name>DT6010</Name><BitSize>48</BitSize>…",
     .check = check_duplicate_datatype,
+    .fix = "removes the second DataType when it is a byte-identical copy of the first",
 };
 
 }  // namespace

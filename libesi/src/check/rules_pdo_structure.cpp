@@ -10,6 +10,7 @@
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
 #include "check/slot_places.hpp"
+#include "check/source_edit.hpp"
 #include "esi/model/limits.hpp"
 
 namespace esi::rules {
@@ -248,11 +249,13 @@ void for_each_repeated_index(const EsiDocument& document, F&& f) {
 }
 
 void report_repeated_index(RuleContext& context, const PdoScope& scope, const Pdo& pdo, const Pdo& first, std::string_view consequence) {
+    // A byte-identical copy of the first PDO (a paste made twice) goes without losing anything.
     context.report(pdo.index_pos,
                    std::string(pdo.element_name()) + " index " + object_address(pdo.index) + " is already used by " +
                        (first.direction == pdo.direction ? "another " : "a ") + std::string(first.element_name()) +
                        (scope.device ? " of this device" : " of this module") + std::string(consequence),
-                   {context.note(index_or_element(first), "first declared here")});
+                   {context.note(index_or_element(first), "first declared here")},
+                   remove_identical_copy(context.document(), first.pos, pdo.pos, "remove the identical copy of the PDO"));
 }
 
 void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
@@ -273,6 +276,7 @@ constexpr Rule pdo_duplicate_index{
     .bad_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1600</Index>…</RxPdo> … <CoE/>",
     .good_example = "<RxPdo><Index>#x1600</Index>…</RxPdo><RxPdo><Index>#x1601</Index>…</RxPdo> … <CoE/>",
     .check = check_duplicate_index,
+    .fix = "removes the second PDO when it is a byte-identical copy of the first",
 };
 
 void check_duplicate_label(const EsiDocument& document, RuleContext& context) {
@@ -297,6 +301,7 @@ constexpr Rule pdo_duplicate_label{
     .bad_example = "<RxPdo Virtual=\"true\"><Index>#x1602</Index>…</RxPdo><RxPdo><Index>#x1602</Index>…</RxPdo>",
     .good_example = "<RxPdo Virtual=\"true\"><Index>#x1602</Index>…</RxPdo><RxPdo><Index>#x1604</Index>…</RxPdo>",
     .check = check_duplicate_label,
+    .fix = "removes the second PDO when it is a byte-identical copy of the first",
 };
 
 // ---- pdo-exclude-unknown --------------------------------------------------------------------

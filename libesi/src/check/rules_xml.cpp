@@ -146,6 +146,26 @@ constexpr Rule xml_xinclude{
     .good_example = "<Dictionary><Objects>…</Objects></Dictionary>",
 };
 
+constexpr Rule xml_undeclared_prefix{
+    .id = "xml-undeclared-prefix",
+    .default_severity = Severity::error,
+    .summary = "A namespace prefix (xsi:) used without its xmlns declaration",
+    .rationale =
+        "A name with a prefix, such as xsi:noNamespaceSchemaLocation, is only namespace-well-formed when an enclosing "
+        "element declares the prefix (W3C Namespaces in XML 1.0 §5, 'Namespace Constraint: Prefix Declared'). "
+        "Namespace-aware readers refuse the document or the attribute: the .NET XmlReader of Windows configuration "
+        "tools stops with \"'xsi' is an undeclared prefix\", libxml2 reports a namespace error and xmllint --schema "
+        "then rejects the unknown attribute. A hand edit that drops xmlns:xsi from the root and keeps "
+        "xsi:noNamespaceSchemaLocation is the usual cause. The xsi prefix names the XML Schema instance namespace by "
+        "convention, so its declaration is certain.",
+    .bad_example = "<EtherCATInfo xsi:noNamespaceSchemaLocation=\"EtherCATInfo.xsd\" Version=\"1.6\">",
+    .good_example =
+        "<EtherCATInfo xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+        "xsi:noNamespaceSchemaLocation=\"EtherCATInfo.xsd\" Version=\"1.6\">",
+    .fix = "declares xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" on the root element; other prefixes are left "
+           "alone (their namespace is not certain)",
+};
+
 constexpr Rule xml_schema{
     .id = "xml-schema",
     .default_severity = Severity::error,
@@ -184,6 +204,7 @@ void add_xml(std::vector<Rule>& out) {
         xml_nesting_depth,
         xml_doctype,
         xml_xinclude,
+        xml_undeclared_prefix,
         xml_schema,
         lint_directive,
     });

@@ -37,16 +37,22 @@ public:
     std::optional<TextEdit> to_bytes(const TextEdit& edit) {
         if (edit.offset + edit.length > decoded_.utf8.size()) return std::nullopt;
         if (!single_byte_) return TextEdit{edit.offset + shift_, edit.length, edit.replacement};
-        // One byte per character: the replaced text and its replacement must be ASCII to keep that.
-        if (!is_ascii(std::string_view(decoded_.utf8).substr(edit.offset, edit.length)) || !is_ascii(edit.replacement))
-            return std::nullopt;
+        // One byte per character: a replacement must be ASCII to keep that (the replaced text may be
+        // anything, e.g. a removed copy with umlauts: its length in bytes is its count of characters).
+        if (!is_ascii(edit.replacement)) return std::nullopt;
         if (edit.offset < decoded_at_) decoded_at_ = raw_at_ = 0;  // edits come in order; restart otherwise
-        for (; decoded_at_ < edit.offset; ++decoded_at_)
-            if ((static_cast<unsigned char>(decoded_.utf8[decoded_at_]) & 0xC0) != 0x80) ++raw_at_;
-        return TextEdit{raw_at_, edit.length, edit.replacement};
+        advance_to(edit.offset);
+        const std::size_t raw_offset = raw_at_;
+        advance_to(edit.offset + edit.length);
+        return TextEdit{raw_offset, raw_at_ - raw_offset, edit.replacement};
     }
 
 private:
+    void advance_to(std::size_t decoded_offset) {
+        for (; decoded_at_ < decoded_offset; ++decoded_at_)
+            if ((static_cast<unsigned char>(decoded_.utf8[decoded_at_]) & 0xC0) != 0x80) ++raw_at_;
+    }
+
     const DecodedText& decoded_;
     std::size_t shift_ = 0;
     bool single_byte_ = false;

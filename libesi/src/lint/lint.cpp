@@ -104,6 +104,12 @@ FileReport lint_input(LintInput read, const std::string& path, const EffectiveCo
                     items.end());
     }
     diagnostics.sort();
+    if (read.source)
+        for (const auto& d : diagnostics)
+            if (d.fix)
+                for (const auto& e : d.fix->edits)
+                    for (const std::size_t offset : {e.offset, e.offset + e.length})
+                        report.fix_positions.emplace(offset, read.source->position_of(offset));
     if (read.source) {
         for (const auto& d : diagnostics) {
             if (d.pos.known() && !report.quoted_lines.count(d.pos.line))

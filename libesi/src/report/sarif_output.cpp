@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -71,6 +72,35 @@ ordered_json physical_location(const Locator& locator, const std::string& path, 
     return physical;
 }
 
+// The fix's edits as SARIF replacements; none when a position is unknown (a fix the linter did
+// not place, which no report of a lint run holds).
+std::optional<ordered_json> sarif_replacements(const FileReport& file, const Fix& fix) {
+    ordered_json replacements = ordered_json::array();
+    for (const TextEdit& e : fix.edits) {
+        const auto start = file.fix_positions.find(e.offset);
+        const auto end = file.fix_positions.find(e.offset + e.length);
+        if (start == file.fix_positions.end() || end == file.fix_positions.end()) return std::nullopt;
+        ordered_json replacement{{"deletedRegion",
+                                  {{"startLine", start->second.line},
+                                   {"startColumn", start->second.column},
+                                   {"endLine", end->second.line},
+                                   {"endColumn", end->second.column}}}};
+        if (!e.replacement.empty()) replacement["insertedContent"] = {{"text", e.replacement}};
+        replacements.push_back(std::move(replacement));
+    }
+    if (replacements.empty()) return std::nullopt;
+    return replacements;
+}
+
+// A safe fix as SARIF 2.1.0 §3.55: one artifactChange of the result's file, a replacement per
+// edit; its deletedRegion in the run's columnKind (code points, as every region here), empty
+// (start = end) for an insertion.
+ordered_json sarif_fix(const Locator& locator, const std::string& path, const Fix& fix, ordered_json replacements) {
+    return {{"description", {{"text", fix.description}}},
+            {"artifactChanges",
+             ordered_json::array({{{"artifactLocation", locator.artifact(path)}, {"replacements", std::move(replacements)}}})}};
+}
+
 }  // namespace
 
 std::string render_sarif(const LintReport& report, const SarifOptions& options) {
@@ -124,6 +154,9 @@ std::string render_sarif(const LintReport& report, const SarifOptions& options) 
                                        {"message", {{"text", n.message}}}});
                 result["relatedLocations"] = std::move(related);
             }
+            if (d.fix)
+                if (std::optional<ordered_json> replacements = sarif_replacements(file, *d.fix))
+                    result["fixes"] = ordered_json::array({sarif_fix(locator, d.path, *d.fix, std::move(*replacements))});
             result["partialFingerprints"] = {
                 {sarif_fingerprint_key, fingerprints.next(d, locator.path(d.path), file.quoted_lines)}};
             results.push_back(std::move(result));

@@ -19,6 +19,7 @@
 #include "esi/xml/foreign_root.hpp"
 #include "esi/xml/well_formed.hpp"
 #include "esi/xml/xinclude.hpp"
+#include "xml/namespace_prefixes.hpp"
 
 namespace esi {
 
@@ -343,6 +344,7 @@ ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOpti
         return result;
     }
     report_xinclude(*source, xml, buffer.data(), result.diagnostics);
+    report_undeclared_prefixes(*source, xml, buffer.data(), result.diagnostics);
     Reader reader(*source, buffer, releasing, result.diagnostics, options);
     EsiDocument doc = reader.read_document(root);
     doc.path = path;

@@ -58,6 +58,7 @@ public:
     void report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes = {});
     // A finding with a safe fix (esi-lint --fix); `fix` absent reports it without one.
     void report(SourcePos pos, std::string message, std::optional<Fix> fix);
+    void report(SourcePos pos, std::string message, std::vector<DiagnosticNote> notes, std::optional<Fix> fix);
     // A note pointing at another place in the same file.
     [[nodiscard]] DiagnosticNote note(SourcePos pos, std::string message) const {
         return DiagnosticNote{document_.path, pos, std::move(message)};

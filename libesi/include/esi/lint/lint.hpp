@@ -35,6 +35,9 @@ struct FileReport {
     // The source lines the diagnostics point at (line number -> text), kept so reports can quote
     // them without holding every file's text in memory.
     std::map<std::uint32_t, std::string> quoted_lines;
+    // Where the fixes' edits begin and end (offset into the decoded text -> line and column), for
+    // reports that address text by position (SARIF's deletedRegion).
+    std::map<std::size_t, SourcePos> fix_positions;
     bool unreadable = false;  // io-error: the file could not be read at all
     // Not linted, and why: an XML file found by a directory walk that is not an ESI file (an
     // ENI, a master's configuration; esi/xml/foreign_root.hpp). Named files are never skipped.
