@@ -9,6 +9,7 @@
 #include <malloc.h>
 #endif
 
+#include <algorithm>
 #include <fstream>
 #include <thread>
 
@@ -42,8 +43,12 @@ TEST(Soak, LintingTheCorpusFiftyTimesDoesNotGrowMemory) {
                         "leaks there; the sanitizer build's leak checker covers them";
     esi::LintOptions options;  // jobs = 0: all cores
     std::string first_json;
-    long after_round_5 = 0;
-    long after_round_50 = 0;
+    // A leak grows from round to round; the allocator's keeping of pages varies up and down (with
+    // the order in which the worker threads free, more so on a loaded machine). So the early
+    // figure is the highest of rounds 4-8 and the late one the lowest of rounds 46-50: one noisy
+    // round late in the run does not fail the test, a steady growth still does.
+    long early = 0;
+    long late = -1;
     for (int round = 1; round <= 50; ++round) {
         const esi::LintReport report = esi::lint_paths({esi::test::corpus_esi_dir()}, options);
         const std::string json = esi::render_json(report);
@@ -53,14 +58,14 @@ TEST(Soak, LintingTheCorpusFiftyTimesDoesNotGrowMemory) {
         } else {
             ASSERT_EQ(json, first_json) << "round " << round << " reports differently";
         }
-        if (round == 5) after_round_5 = resident_kb();
-        if (round == 50) after_round_50 = resident_kb();
+        if (round >= 4 && round <= 8) early = std::max(early, resident_kb());
+        if (round >= 46) late = late < 0 ? resident_kb() : std::min(late, resident_kb());
     }
-    // Tolerance: 10 % of the round-5 figure plus 8 MiB, for allocator bookkeeping of the worker
-    // threads; a leak of 200 KiB per round (45 rounds) already exceeds it, and one corpus round's
-    // documents are far more.
-    const long tolerance = after_round_5 / 10 + 8 * 1024;
-    std::cout << "[          ] resident memory after round 5: " << after_round_5 << " KiB, after round 50: "
-              << after_round_50 << " KiB (tolerance " << tolerance << " KiB)\n";
-    EXPECT_LE(after_round_50, after_round_5 + tolerance);
+    // Tolerance: 10 % of the early figure plus 8 MiB, for allocator bookkeeping of the worker
+    // threads (about 10 MiB at the usual 15-20 MiB); a leak of 300 KiB per round (38 rounds
+    // between the two windows) already exceeds it, and one corpus round's documents are far more.
+    const long tolerance = early / 10 + 8 * 1024;
+    std::cout << "[          ] resident memory, highest of rounds 4-8: " << early << " KiB, lowest of rounds 46-50: " << late
+              << " KiB (tolerance " << tolerance << " KiB)\n";
+    EXPECT_LE(late, early + tolerance);
 }
