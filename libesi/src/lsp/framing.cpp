@@ -1,5 +1,7 @@
 #include "esi/lsp/framing.hpp"
 
+#include "esi/plural.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -141,7 +143,7 @@ Frame MessageReader::next() {
             }
             if (left != 0) return {};
             return {Frame::Kind::oversize, {},
-                    "message of " + std::to_string(length) + " bytes is over the limit of " + std::to_string(max_body_)};
+                    "message of " + esi::counted(length, "byte") + " is over the limit of " + std::to_string(max_body_)};
         }
         if (buffer_.size() - start_ < length) {
             compact();

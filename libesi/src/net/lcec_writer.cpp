@@ -24,6 +24,7 @@
 
 #include "esi/data_types.hpp"
 #include "esi/net/outputs.hpp"
+#include "esi/plural.hpp"
 #include "xml_text.hpp"
 
 namespace esi::net {
@@ -146,8 +147,8 @@ std::string write_lcec(const Network& n) {
                     XmlText::Attributes a = {{"idx", hex_attr(e.index, 4)}, {"subIdx", hex_attr(e.subindex, 2)}, {"bitLen", std::to_string(e.bit_len)}};
                     const std::optional<std::string> type = e.is_padding() ? std::nullopt : hal_type(e, fork);
                     if (!e.is_padding() && !type)
-                        x.comment(fmt::format("0x{:04X}:{:02X} ({} bits) has no HAL pin: {} has no HAL type for it", e.index, e.subindex,
-                                              e.bit_len, fork_name(fork)));
+                        x.comment(fmt::format("0x{:04X}:{:02X} ({}) has no HAL pin: {} has no HAL type for it", e.index, e.subindex,
+                                              esi::counted(e.bit_len, "bit"), fork_name(fork)));
                     if (type) {
                         std::string pin = base_pin(e);
                         if (count[pin] > 1) {
