@@ -6,7 +6,7 @@ namespace esi::net {
 
 namespace {
 
-constexpr std::string_view header = "libesi-esi-index 2";
+constexpr std::string_view header = "libesi-esi-index 3";
 
 std::uint64_t fnv1a(std::string_view text) {
     std::uint64_t h = 0xcbf29ce484222325ull;
@@ -127,6 +127,12 @@ std::optional<IndexCache> parse_index_cache(std::string_view text) {
             auto [it, inserted] = cache.emplace(*path, std::move(file));
             if (!inserted) return std::nullopt;
             current = &it->second;
+        } else if (kind == 'H') {
+            if (!current || current->devices.empty()) return std::nullopt;
+            HiddenIdentity h;
+            const auto product = field(line);
+            if (!product || !optional_u32(*product, h.product_code) || !optional_u32(line, h.revision_no)) return std::nullopt;
+            current->devices.back().hides.push_back(h);
         } else if (kind == 'P') {
             const auto problem = unescape(line);
             if (!current || !problem) return std::nullopt;
@@ -168,6 +174,8 @@ std::string format_index_cache(const IndexCache& cache) {
                    format_optional(d.revision_no) + ' ' + std::to_string(d.offset) + ' ' + std::to_string(d.line) + ' ' +
                    std::to_string(d.column) + ' ' + std::to_string(d.ordinal) + ' ' + escape(d.type) + '\t' + escape(d.name) +
                    '\n';
+            for (const HiddenIdentity& h : d.hides)
+                out += "H " + format_optional(h.product_code) + ' ' + format_optional(h.revision_no) + '\n';
         }
     }
     const std::uint64_t checksum = fnv1a(out);

@@ -177,6 +177,7 @@ CachedFile scan_file(const FoundFile& found) {
         d.line = s.pos.line;
         d.column = s.pos.column;
         d.ordinal = s.ordinal;
+        d.hides = std::move(s.hides);
         out.devices.push_back(std::move(d));
     }
     return out;
@@ -201,7 +202,7 @@ std::optional<fs::path> default_cache_dir() {
     return std::nullopt;
 }
 
-fs::path index_cache_file(const fs::path& cache_dir) { return cache_dir / "esi-index.v2"; }
+fs::path index_cache_file(const fs::path& cache_dir) { return cache_dir / "esi-index.v3"; }
 
 IndexResult build_library_index(const std::vector<fs::path>& roots, const IndexOptions& options) {
     IndexResult result;
@@ -274,7 +275,7 @@ bool index_agrees_with_files(const LibraryIndex& index, const std::vector<const 
             if (d->ordinal >= now.devices.size()) return false;
             const IndexedDevice& fresh = now.devices[d->ordinal];
             if (fresh.vendor_id != d->vendor_id || fresh.product_code != d->product_code || fresh.revision_no != d->revision_no ||
-                fresh.type != d->type || fresh.offset != d->offset)
+                fresh.type != d->type || fresh.offset != d->offset || fresh.hides != d->hides)
                 return false;
         }
     }

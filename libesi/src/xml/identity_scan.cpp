@@ -237,6 +237,9 @@ private:
                 device_->product_code = number_value(decoded(attribute(*tag, "ProductCode")));
                 device_->revision_no = number_value(decoded(attribute(*tag, "RevisionNo")));
                 if (!tag->self_closing) device_->type = leaf_text(tag->end);
+            } else if (tag->name == "HideType") {
+                hides_.push_back({number_value(decoded(attribute(*tag, "ProductCode"))),
+                                  number_value(decoded(attribute(*tag, "RevisionNo")))});
             } else if (tag->name == "Name") {
                 const std::string_view lcid = attribute(*tag, "LcId");
                 const bool english = trim(lcid) == "1033";
@@ -261,6 +264,7 @@ private:
             device_->ordinal = ordinal_++;
             device_depth_ = stack_.size();
             have_name_ = english_name_ = have_type_ = false;
+            hides_.clear();
             if (tag->self_closing) {
                 finish_device(result);
                 return tag->end;
@@ -310,6 +314,11 @@ private:
 
     void finish_device(IdentityScan& result) {
         device_->vendor_id = vendor_id_;
+        // A HideType without ProductCode names a revision of the device's own product.
+        for (HiddenIdentity& h : hides_)
+            if (!h.product_code) h.product_code = device_->product_code;
+        device_->hides = std::move(hides_);
+        hides_.clear();
         result.devices.push_back(std::move(*device_));
         device_.reset();
     }
@@ -336,6 +345,7 @@ private:
     std::vector<std::string_view> stack_;
     std::optional<std::uint32_t> vendor_id_;
     std::optional<ScannedDevice> device_;
+    std::vector<HiddenIdentity> hides_;  // of the Device being read (its Type may come after them)
     std::size_t device_depth_ = 0;
     std::size_t ordinal_ = 0;
     bool have_name_ = false;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "esi/diagnostic.hpp"
+#include "esi/xml/identity_scan.hpp"
 
 namespace esi::net {
 
@@ -42,6 +43,9 @@ struct IndexedDevice {
     std::uint32_t line = 0;
     std::uint32_t column = 0;
     std::size_t ordinal = 0;  // place among the file's devices
+    // The device's HideType elements: revisions its vendor's catalogue shows it in place of
+    // (resolve.cpp passes them over when no revision is asked for).
+    std::vector<HiddenIdentity> hides;
 };
 
 struct LibraryIndex {
