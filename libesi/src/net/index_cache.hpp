@@ -8,7 +8,7 @@
 //   libesi-esi-index 3
 //   F <size> <mtime_ns> <ctime_ns> <inode> <device count> <path>
 //   P <problem>                                   (optional, after F)
-//   D <vendor|-> <product|-> <revision|-> <offset> <line> <column> <ordinal> <type>\t<name>
+//   D <vendor|-> <product|-> <revision|-> <offset> <line> <column> <ordinal> <type>\t<name>\t<vendor name>
 //   H <product|-> <revision|->                    (one per HideType of the device before it)
 //   end <file count> <checksum, 16 hex digits>
 //

@@ -113,7 +113,10 @@ CachedFile scan_yaml_source(const FoundFile& found) {
     for (const Device* device : select_devices(*loaded.document, std::nullopt)) {
         IndexedDevice d;
         const EtherCATInfo* info = loaded.document->info_of(*device);
-        if (info && info->vendor) d.vendor_id = info->vendor->id;
+        if (info && info->vendor) {
+            d.vendor_id = info->vendor->id;
+            d.vendor_name = primary_text(info->vendor->names);
+        }
         d.product_code = device->type.product_code;
         d.revision_no = device->type.revision_no;
         d.type = device->type.text;
@@ -173,6 +176,7 @@ CachedFile scan_file(const FoundFile& found) {
         d.revision_no = s.revision_no;
         d.type = std::move(s.type);
         d.name = std::move(s.name);
+        d.vendor_name = std::move(s.vendor_name);
         d.offset = s.offset;
         d.line = s.pos.line;
         d.column = s.pos.column;

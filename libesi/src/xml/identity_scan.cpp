@@ -255,8 +255,17 @@ private:
             }
         } else if (tag->name == "Id" && parent_is("Vendor") && parent_is("EtherCATInfo", 1) && !tag->self_closing) {
             vendor_id_ = number_value(leaf_text(tag->end));
+        } else if (tag->name == "Name" && parent_is("Vendor") && parent_is("EtherCATInfo", 1) && !tag->self_closing) {
+            const bool english = trim(attribute(*tag, "LcId")) == "1033";
+            if (!have_vendor_name_ || (english && !english_vendor_name_)) {
+                vendor_name_ = leaf_text(tag->end);
+                have_vendor_name_ = true;
+                english_vendor_name_ = english;
+            }
         } else if (tag->name == "EtherCATInfo") {
             vendor_id_.reset();
+            vendor_name_.clear();
+            have_vendor_name_ = english_vendor_name_ = false;
         } else if (tag->name == "Device" && !device_ && parent_is("Devices") && parent_is("Descriptions", 1)) {
             device_ = ScannedDevice{};
             device_->offset = lt;
@@ -314,6 +323,7 @@ private:
 
     void finish_device(IdentityScan& result) {
         device_->vendor_id = vendor_id_;
+        device_->vendor_name = vendor_name_;
         // A HideType without ProductCode names a revision of the device's own product.
         for (HiddenIdentity& h : hides_)
             if (!h.product_code) h.product_code = device_->product_code;
@@ -344,6 +354,9 @@ private:
     std::string error_;
     std::vector<std::string_view> stack_;
     std::optional<std::uint32_t> vendor_id_;
+    std::string vendor_name_;
+    bool have_vendor_name_ = false;
+    bool english_vendor_name_ = false;
     std::optional<ScannedDevice> device_;
     std::vector<HiddenIdentity> hides_;  // of the Device being read (its Type may come after them)
     std::size_t device_depth_ = 0;

@@ -38,6 +38,7 @@ struct IndexedDevice {
     std::optional<std::uint32_t> revision_no;
     std::string type;  // Type text
     std::string name;  // English Name
+    std::string vendor_name;  // the file's Vendor/Name (English, else the first)
     std::size_t file = 0;  // into LibraryIndex::files
     std::size_t offset = 0;
     std::uint32_t line = 0;

@@ -4,7 +4,7 @@
 // A library index (esi-net) visits every file of an ESI library, hundreds of MB, to learn which
 // file describes which device; only the file it then picks is read whole (read_esi). The scan
 // tokenises the markup (comments, CDATA sections, processing instructions, quoted attribute
-// values), reads Vendor/Id and each Device's Type, HideType and Name, and skips the rest of a Device's
+// values), reads Vendor/Id and Name and each Device's Type, HideType and Name, and skips the rest of a Device's
 // content once its leading elements are read. It builds no element tree.
 //
 // Invariant (tested over the corpus): for a file read_esi accepts, the scan lists the same
@@ -32,6 +32,7 @@ struct HiddenIdentity {
 
 struct ScannedDevice {
     std::optional<std::uint32_t> vendor_id;  // Vendor/Id of the EtherCATInfo that holds the device
+    std::string vendor_name;                 // its Vendor/Name (LcId 1033, else the first), trimmed
     std::optional<std::uint32_t> product_code;
     std::optional<std::uint32_t> revision_no;
     std::string type;         // Type text, trimmed
