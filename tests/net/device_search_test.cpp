@@ -74,6 +74,23 @@ TEST(DeviceSearch, RanksExactThenPrefixThenSubstring) {
     for (const esi::net::DeviceMatch& m : el2008.matches) EXPECT_NE(m.rank, MatchRank::fuzzy);
 }
 
+TEST(DeviceSearch, LegacyRevisionsComeAfterTheCurrentOnesAndSaySo) {
+    ESI_REQUIRE_CORPUS();
+    const esi::net::DeviceSearch found = search("EK1100");
+    ASSERT_FALSE(found.matches.empty());
+    // The first line is what `build` takes without a revision, not the legacy 0x270B0000.
+    EXPECT_EQ(found.matches.front().device->revision_no, 0x00120000u);
+    EXPECT_EQ(found.matches.front().hidden_by, nullptr);
+    bool legacy = false;
+    for (const esi::net::DeviceMatch& m : found.matches)
+        if (m.device->type == "EK1100" && m.device->revision_no == 0x270B0000u) legacy = m.hidden_by != nullptr;
+    EXPECT_TRUE(legacy);
+    const std::string text = esi::net::device_search_text(esi::test::corpus_index(), found);
+    EXPECT_NE(text.find("revision 0x270B0000) — EK1100 Ethernet Coupler Terminal [exact; legacy: EK1100 revision 0x00000000 hides it]"),
+              std::string::npos)
+        << text;
+}
+
 TEST(DeviceSearch, ATypoFindsFuzzyMatchesOnlyWhenNothingContainsTheText) {
     ESI_REQUIRE_CORPUS();
     const esi::net::DeviceSearch found = search("EL2O08");

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <functional>
+#include <map>
+#include <tuple>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -55,6 +57,21 @@ std::function<bool(const IndexedDevice&)> vendor_filter(const std::optional<std:
     return [wanted](const IndexedDevice& d) { return folded(d.vendor_name).find(wanted) != std::string::npos; };
 }
 
+// Which matches some device of the same vendor hides (HideType): the first such device in index order.
+void mark_hidden(const LibraryIndex& index, std::vector<DeviceMatch>& matches) {
+    std::map<std::tuple<std::optional<std::uint32_t>, std::uint32_t, std::uint32_t>, const IndexedDevice*> hiders;
+    for (const IndexedDevice& d : index.devices)
+        for (const HiddenIdentity& h : d.hides)
+            if (h.product_code && h.revision_no && !(h.product_code == d.product_code && h.revision_no == d.revision_no))
+                hiders.emplace(std::tuple{d.vendor_id, *h.product_code, *h.revision_no}, &d);
+    if (hiders.empty()) return;
+    for (DeviceMatch& m : matches) {
+        if (!m.device->product_code || !m.device->revision_no) continue;
+        if (const auto it = hiders.find({m.device->vendor_id, *m.device->product_code, *m.device->revision_no}); it != hiders.end())
+            m.hidden_by = it->second;
+    }
+}
+
 std::string hex32(std::optional<std::uint32_t> v) { return v ? fmt::format("0x{:08X}", *v) : std::string(); }
 
 }  // namespace
@@ -91,9 +108,11 @@ DeviceSearch search_devices(const LibraryIndex& index, const std::optional<Devic
         for (const IndexedDevice& d : index.devices)
             if (of_vendor(d) && identity_matches(d, *query) && close_by_edits(d, wanted)) result.matches.push_back({&d, MatchRank::fuzzy});
     }
+    mark_hidden(index, result.matches);
     std::stable_sort(result.matches.begin(), result.matches.end(), [](const DeviceMatch& a, const DeviceMatch& b) {
         if (a.rank != b.rank) return a.rank < b.rank;
         if (a.device->type != b.device->type) return a.device->type < b.device->type;
+        if ((a.hidden_by == nullptr) != (b.hidden_by == nullptr)) return a.hidden_by == nullptr;
         return a.device->revision_no.value_or(0) > b.device->revision_no.value_or(0);
     });
     if (result.matches.empty()) {
@@ -117,8 +136,10 @@ std::string device_search_text(const LibraryIndex& index, const DeviceSearch& se
     std::string out;
     for (const DeviceMatch& m : search.matches) {
         const IndexedDevice& d = *m.device;
-        out += fmt::format("{}:{}:{}: {}{} [{}]\n", index.file_of(d).path, d.line, d.column, describe_identity(d),
-                           d.name.empty() || d.name == d.type ? "" : " — " + d.name, match_rank_name(m.rank));
+        const std::string legacy =
+            m.hidden_by ? fmt::format("; legacy: {} revision {} hides it", m.hidden_by->type, hex32(m.hidden_by->revision_no)) : "";
+        out += fmt::format("{}:{}:{}: {}{} [{}{}]\n", index.file_of(d).path, d.line, d.column, describe_identity(d),
+                           d.name.empty() || d.name == d.type ? "" : " — " + d.name, match_rank_name(m.rank), legacy);
     }
     return out;
 }
@@ -138,6 +159,14 @@ std::string device_search_json(const LibraryIndex& index, const DeviceSearch& se
         o["file"] = index.file_of(d).path;
         o["line"] = d.line;
         o["column"] = d.column;
+        if (m.hidden_by) {
+            nlohmann::ordered_json h;
+            h["type"] = m.hidden_by->type;
+            h["revision"] = hex32(m.hidden_by->revision_no);
+            h["file"] = index.file_of(*m.hidden_by).path;
+            h["line"] = m.hidden_by->line;
+            o["hidden_by"] = std::move(h);
+        }
         devices.push_back(std::move(o));
     }
     nlohmann::ordered_json j;

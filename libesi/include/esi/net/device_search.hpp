@@ -11,8 +11,9 @@
 //              matched, so that `EL2008` does not list every EL20x8.
 // A vendor (`--vendor Elmo`) keeps the devices whose file's Vendor/Name contains the text, or
 // whose vendor id is the number given; alone, it lists every device of that vendor. Identity
-// queries (VENDOR:PRODUCT[:REVISION]) match exactly. The order is rank, Type text, revision
-// (highest first), then the index's order (file path, document order): deterministic.
+// queries (VENDOR:PRODUCT[:REVISION]) match exactly. The order is rank, Type text, current
+// before hidden (legacy) revisions, revision (highest first), then the index's order (file path,
+// document order): deterministic, and the first line of a name is what `build` would take.
 
 #include <optional>
 #include <string>
@@ -31,6 +32,9 @@ enum class MatchRank { exact, prefix, substring, fuzzy, vendor };
 struct DeviceMatch {
     const IndexedDevice* device = nullptr;
     MatchRank rank = MatchRank::exact;
+    // A device of the same vendor that lists this revision as a HideType: a legacy revision,
+    // which `build` passes over without `revision:` (resolve.hpp); null when none does.
+    const IndexedDevice* hidden_by = nullptr;
 };
 
 struct DeviceSearch {
