@@ -86,7 +86,7 @@ TEST(DeviceSearch, LegacyRevisionsComeAfterTheCurrentOnesAndSaySo) {
         if (m.device->type == "EK1100" && m.device->revision_no == 0x270B0000u) legacy = m.hidden_by != nullptr;
     EXPECT_TRUE(legacy);
     const std::string text = esi::net::device_search_text(esi::test::corpus_index(), found);
-    EXPECT_NE(text.find("revision 0x270B0000) — EK1100 Ethernet Coupler Terminal [exact; legacy: EK1100 revision 0x00000000 hides it]"),
+    EXPECT_NE(text.find("revision 0x270B0000) — EK1100 Ethernet Coupler Terminal [exact; hidden by EK1100 revision 0x00000000]"),
               std::string::npos)
         << text;
 }

@@ -137,7 +137,7 @@ std::string device_search_text(const LibraryIndex& index, const DeviceSearch& se
     for (const DeviceMatch& m : search.matches) {
         const IndexedDevice& d = *m.device;
         const std::string legacy =
-            m.hidden_by ? fmt::format("; legacy: {} revision {} hides it", m.hidden_by->type, hex32(m.hidden_by->revision_no)) : "";
+            m.hidden_by ? fmt::format("; hidden by {} revision {}", m.hidden_by->type, hex32(m.hidden_by->revision_no)) : "";
         out += fmt::format("{}:{}:{}: {}{} [{}{}]\n", index.file_of(d).path, d.line, d.column, describe_identity(d),
                            d.name.empty() || d.name == d.type ? "" : " — " + d.name, match_rank_name(m.rank), legacy);
     }
