@@ -2,7 +2,7 @@
 //   esi-net build NETWORK.yaml -o OUTDIR [--only eni,igh,lcec,map,html,ros2] [--esi PATH...] [--templates DIR...]
 //   esi-net init --from-igh SLAVES.txt [--esi PATH...] -o NETWORK.yaml
 //   esi-net init --from-eni network.xml --esi PATH... [--omit-unknown] -o NETWORK.yaml
-//   esi-net find [--esi PATH...] VENDOR:PRODUCT[:REVISION] | NAME
+//   esi-net find [--esi PATH...] [--vendor NAME] [--format text|json] [VENDOR:PRODUCT[:REVISION] | NAME]
 //   esi-net check [--network NETWORK.yaml] [--esi PATH...] [--igh-slaves F] [--igh-pdos F] [--soem F] [--sii N=F] [--format text|json]
 // Exit codes: 0 done; 1 the network has errors (an unknown device, a PDO selection the ESI
 // forbids …) or nothing was found or written; 2 usage error or an unreadable or invalid input
@@ -25,6 +25,7 @@
 #include "esi/net/bus_check.hpp"
 #include "esi/net/bus_dump.hpp"
 #include "esi/net/eni_import.hpp"
+#include "esi/net/device_search.hpp"
 #include "esi/net/igh_scan.hpp"
 #include "esi/net/library_index.hpp"
 #include "esi/net/network.hpp"
@@ -114,35 +115,50 @@ int run_build(const std::string& network_path, const std::string& output_dir, co
     return written.has_errors() ? exit_findings : exit_ok;
 }
 
-int run_find(const std::string& query_text, const std::vector<std::string>& esi, bool no_cache) {
-    std::string error;
-    const auto query = esi::net::parse_find_query(query_text, error);
-    if (!query) {
-        std::cerr << "esi-net find: " << error << "\n";
+int run_find(const std::string& query_text, const std::string& vendor, const std::string& format, const std::vector<std::string>& esi,
+             bool no_cache) {
+    if (format != "text" && format != "json") {
+        std::cerr << "esi-net find: --format is text or json, not '" << format << "'\n";
         return exit_usage;
+    }
+    if (query_text.empty() && vendor.empty()) {
+        std::cerr << "esi-net find: give a device (name, part of a name or VENDOR:PRODUCT[:REVISION]) and/or --vendor NAME\n";
+        return exit_usage;
+    }
+    std::optional<esi::net::DeviceQuery> query;
+    if (!query_text.empty()) {
+        std::string error;
+        query = esi::net::parse_find_query(query_text, error);
+        if (!query) {
+            std::cerr << "esi-net find: " << error << "\n";
+            return exit_usage;
+        }
     }
     if (esi.empty()) {
         std::cerr << "esi-net find: give the ESI library with --esi PATH\n";
         return exit_usage;
     }
+    const std::optional<std::string> vendor_filter = vendor.empty() ? std::nullopt : std::optional<std::string>(vendor);
     esi::net::IndexOptions options = index_options(no_cache);
     esi::net::IndexResult indexed = esi::net::build_library_index(paths(esi), options);
-    esi::net::FindResult found = esi::net::find_devices(indexed.index, *query);
-    if (indexed.stats.cached > 0 && !esi::net::index_agrees_with_files(indexed.index, found.devices)) {
+    esi::net::DeviceSearch found = esi::net::search_devices(indexed.index, query, vendor_filter);
+    const auto devices_of = [](const esi::net::DeviceSearch& search) {
+        std::vector<const esi::net::IndexedDevice*> out;
+        for (const esi::net::DeviceMatch& m : search.matches) out.push_back(m.device);
+        return out;
+    };
+    if (indexed.stats.cached > 0 && !esi::net::index_agrees_with_files(indexed.index, devices_of(found))) {
         // What the cache said is not what the files hold: the answer comes from the files.
         options.rescan = true;
         indexed = esi::net::build_library_index(paths(esi), options);
-        found = esi::net::find_devices(indexed.index, *query);
+        found = esi::net::search_devices(indexed.index, query, vendor_filter);
     }
     print(indexed.diagnostics);
     if (indexed.diagnostics.has_errors()) return exit_usage;
     print(found.diagnostics);
-    std::string out;
-    for (const esi::net::IndexedDevice* d : found.devices)
-        out += fmt::format("{}:{}:{}: {}{}\n", indexed.index.file_of(*d).path, d->line, d->column, esi::net::describe_identity(*d),
-                           d->name.empty() || d->name == d->type ? "" : " — " + d->name);
-    esi::cli::write_stdout(out);
-    return found.devices.empty() ? exit_findings : exit_ok;
+    esi::cli::write_stdout(format == "json" ? esi::net::device_search_json(indexed.index, found)
+                                            : esi::net::device_search_text(indexed.index, found));
+    return found.matches.empty() ? exit_findings : exit_ok;
 }
 
 int run_init(const std::string& scan_path, const std::string& output, const std::vector<std::string>& esi, bool no_cache) {
@@ -346,10 +362,15 @@ int run_tool(int argc, char** argv) {
     check->add_option("--sii", check_inputs.sii, "POSITION=FILE: an SII image (`ethercat sii_read -p POSITION`), repeatable");
     check->add_option("--format", check_inputs.format, "text (default) or json");
 
-    std::string query;
+    std::string query, find_vendor, find_format = "text";
     CLI::App* find = app.add_subcommand("find", "which ESI file describes a device");
-    find->add_option("device", query, "VENDOR:PRODUCT[:REVISION] or a device name (Type text)")->required();
-    find->add_option("--esi", find_esi, "ESI files or folders to look in (repeatable)");
+    find->add_option("device", query, "VENDOR:PRODUCT[:REVISION], a device name or part of one (Type text or Name)");
+    find->add_option("--vendor", find_vendor, "only devices of this vendor (part of its name, or its id); alone: all its devices");
+    // One path per --esi: the device is optional (--vendor alone), so a greedy --esi would take it.
+    find->add_option("--esi", find_esi, "an ESI file or folder to look in (repeat --esi for more)")
+        ->allow_extra_args(false)
+        ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+    find->add_option("--format", find_format, "text (default) or json");
 
     if (const std::optional<int> exit_code = esi::cli::parse_or_exit(app, argc, argv)) return *exit_code;
     if (build->parsed()) {
@@ -366,7 +387,7 @@ int run_tool(int argc, char** argv) {
         }
         return run_init(scan_path, init_output, init_esi, no_cache);
     }
-    if (find->parsed()) return run_find(query, find_esi, no_cache);
+    if (find->parsed()) return run_find(query, find_vendor, find_format, find_esi, no_cache);
     if (check->parsed()) return run_check(check_inputs, check_esi, no_cache);
     return exit_usage;
 }

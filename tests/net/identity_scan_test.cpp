@@ -37,6 +37,8 @@ TEST(IdentityScan, MatchesTheReaderOnEveryCorpusFile) {
             EXPECT_EQ(s.type, d.type.text) << entry.path() << " #" << i;
             EXPECT_EQ(s.name, esi::primary_text(d.names)) << entry.path() << " #" << i;
             EXPECT_EQ(s.vendor_id, info && info->vendor ? info->vendor->id : std::nullopt) << entry.path() << " #" << i;
+            EXPECT_EQ(s.vendor_name, info && info->vendor ? std::string(esi::trim(esi::primary_text(info->vendor->names))) : std::string())
+                << entry.path() << " #" << i;
             EXPECT_EQ(s.pos.line, d.pos.line) << entry.path() << " #" << i;
             ++devices;
         }

@@ -80,6 +80,16 @@ slaves:
 slaves:
   - { name: Drive, device: Drive1, modules: [0x100, Position Mode (DC)] }
 )"});
+        // A tree (issue 24 §4): an EK1122 junction on the coupler's E-Bus, a drive on each of its
+        // Ethernet ports (D is visited before B) and a terminal on its E-Bus port C.
+        out.push_back({"junction-tree", R"(master: { name: Tree, cycle_time_us: 1000 }
+slaves:
+  - { name: Coupler, product_code: 0x044C2C52, revision: 0x00120000 }
+  - { name: Junction, product_code: 0x04622C52, revision: 0x00110000 }
+  - { name: Axis D, product_code: 0x00030924, revision: 0x00010420, previous_port: D }
+  - { name: Axis B, product_code: 0x00030924, revision: 0x00010420, previous_slave: Junction, previous_port: B }
+  - { name: Outputs, product_code: 0x07D83052, revision: 0x00120000, previous_slave: Junction }
+)"});
         return out;
     }();
     return networks;

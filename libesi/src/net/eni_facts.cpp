@@ -100,6 +100,17 @@ std::optional<EniFacts> read_eni_facts(std::string_view xml, const std::string& 
         s.vendor_id = *vendor;
         s.product_code = *product;
         s.revision = number(info.child_value("RevisionNo")).value_or(0);
+        s.phys_addr = number(info.child_value("PhysAddr"));
+        pugi::xml_node previous;
+        for (pugi::xml_node p : slave.children("PreviousPort")) {
+            const std::string selected = p.attribute("Selected").as_string();
+            if (!previous || selected == "1" || selected == "true") previous = p;
+        }
+        if (previous) {
+            const std::string port = previous.child_value("Port");
+            if (port.size() == 1 && port[0] >= 'A' && port[0] <= 'D') s.previous_port = port[0];
+            s.previous_phys_addr = number(previous.child_value("PhysAddr"));
+        }
         // A station alias: Identification on the alias register 0x0012 (ETG.2100).
         if (const pugi::xml_node id = info.child("Identification"); id && number(id.child_value("Ado")) == 0x0012u)
             if (const auto v = number(id.attribute("Value").as_string()); v && *v && *v <= 0xFFFF) s.alias = static_cast<std::uint16_t>(*v);

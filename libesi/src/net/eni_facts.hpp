@@ -41,6 +41,11 @@ struct EniSlaveFacts {
     std::vector<EniCoeFact> coe;
     std::uint16_t assign_activate = 0;  // 0: no DC
     std::uint32_t line = 0;             // of the Slave element, for diagnostics
+    std::optional<std::uint32_t> phys_addr;  // Info/PhysAddr
+    // The selected PreviousPort (the only one, else the one with Selected 1/true): the port
+    // letter of the upstream slave and its station address.
+    std::optional<char> previous_port;
+    std::optional<std::uint32_t> previous_phys_addr;
 };
 
 struct EniFacts {

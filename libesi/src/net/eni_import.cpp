@@ -55,6 +55,22 @@ NetworkSpec spec_of(const std::string& path, const MasterSpec& master, const std
     return spec;
 }
 
+// The ENI's PreviousPort as previous_slave/previous_port: the slave whose station address it
+// names, when that is not the one listed before, and the port whenever it is not B (the line's
+// usual port), so that a tree comes back as a tree (topology.cpp checks both on build).
+void link_previous_ports(std::vector<ImportedSlave>& slaves) {
+    for (std::size_t k = 1; k < slaves.size(); ++k) {
+        const EniSlaveFacts& e = *slaves[k].eni;
+        if (!e.previous_phys_addr || !e.previous_port) continue;
+        std::optional<std::size_t> up;
+        for (std::size_t j = 0; j < k; ++j)
+            if (slaves[j].eni->phys_addr == e.previous_phys_addr) up = j;
+        if (!up || !slaves[*up].known) continue;
+        if (*up != k - 1) slaves[k].spec.previous_slave = slaves[*up].spec.name;
+        if (*up != k - 1 || *e.previous_port != 'B') slaves[k].spec.previous_port = std::string(1, *e.previous_port);
+    }
+}
+
 std::string hex(std::uint32_t v, int digits) { return fmt::format("0x{:0{}X}", v, digits); }
 
 std::string render(const EniFacts& facts, const MasterSpec& master, const std::vector<ImportedSlave>& slaves, const std::string& path,
@@ -77,6 +93,8 @@ std::string render(const EniFacts& facts, const MasterSpec& master, const std::v
         y += in + fmt::format("product_code: {}\n", hex(*ss.product_code, 8));
         y += in + fmt::format("revision: {}\n", hex(*ss.revision, 8));
         if (ss.alias) y += in + fmt::format("alias: {}\n", *ss.alias);
+        if (ss.previous_slave) y += in + "previous_slave: " + yaml_quoted(*ss.previous_slave) + "\n";
+        if (ss.previous_port) y += in + "previous_port: " + *ss.previous_port + "\n";
         if (ss.pdos) {
             std::string list;
             for (const PdoRef& p : *ss.pdos) list += (list.empty() ? "" : ", ") + hex(p.index, 4);
@@ -147,6 +165,7 @@ EniImport network_from_eni(std::string_view xml, const std::string& path, const 
         }
         slaves.push_back(std::move(s));
     }
+    link_previous_ports(slaves);
 
     // Builds the known slaves as specified so far; nullopt (and the errors) when that fails.
     auto build = [&]() -> std::optional<Network> {

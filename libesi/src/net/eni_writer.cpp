@@ -201,16 +201,6 @@ void mailbox(XmlText& x, const NetworkSlave& s) {
     x.close();
 }
 
-// The port of the previous device this one hangs off: its first port after A whose physics
-// matches this device's port A (E-bus to E-bus, MII to MII); B when none does.
-std::string previous_port(const NetworkSlave& previous, const NetworkSlave& s) {
-    const auto cls = [](char c) { return c == 'K' ? 'K' : (c == 'Y' || c == 'H') ? 'Y' : c; };
-    const char wanted = s.physics.empty() ? 'Y' : cls(s.physics[0]);
-    for (std::size_t port = 1; port < previous.physics.size() && port < 4; ++port)
-        if (cls(previous.physics[port]) == wanted) return std::string(1, static_cast<char>('A' + port));
-    return "B";
-}
-
 void slave(XmlText& x, const Network& n, const NetworkSlave& s) {
     x.open("Slave");
     x.open("Info");
@@ -237,10 +227,12 @@ void slave(XmlText& x, const Network& n, const NetworkSlave& s) {
     x.open("InitCmds");
     for (const RegisterCommand& c : slave_init_cmds(n, s)) register_cmd(x, c);
     x.close();
-    if (s.position > 0) {
-        const NetworkSlave& previous = n.slaves[s.position - 1];
+    if (s.previous) {
+        // The port and station address of the slave it hangs off (topology.cpp), as TwinCAT
+        // writes a tree: one selected PreviousPort per slave but the first.
+        const NetworkSlave& previous = n.slaves[*s.previous];
         x.open("PreviousPort", {{"Selected", "1"}});
-        x.leaf("Port", previous_port(previous, s));
+        x.leaf("Port", std::string(1, static_cast<char>('A' + s.previous_port)));
         x.leaf("PhysAddr", previous.phys_addr);
         x.close();
     }

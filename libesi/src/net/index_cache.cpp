@@ -6,7 +6,7 @@ namespace esi::net {
 
 namespace {
 
-constexpr std::string_view header = "libesi-esi-index 2";
+constexpr std::string_view header = "libesi-esi-index 3";
 
 std::uint64_t fnv1a(std::string_view text) {
     std::uint64_t h = 0xcbf29ce484222325ull;
@@ -127,6 +127,12 @@ std::optional<IndexCache> parse_index_cache(std::string_view text) {
             auto [it, inserted] = cache.emplace(*path, std::move(file));
             if (!inserted) return std::nullopt;
             current = &it->second;
+        } else if (kind == 'H') {
+            if (!current || current->devices.empty()) return std::nullopt;
+            HiddenIdentity h;
+            const auto product = field(line);
+            if (!product || !optional_u32(*product, h.product_code) || !optional_u32(line, h.revision_no)) return std::nullopt;
+            current->devices.back().hides.push_back(h);
         } else if (kind == 'P') {
             const auto problem = unescape(line);
             if (!current || !problem) return std::nullopt;
@@ -143,11 +149,15 @@ std::optional<IndexCache> parse_index_cache(std::string_view text) {
                 return std::nullopt;
             const std::size_t tab = line.find('\t');
             if (tab == std::string_view::npos) return std::nullopt;
+            const std::size_t tab2 = line.find('\t', tab + 1);
+            if (tab2 == std::string_view::npos) return std::nullopt;
             const auto type = unescape(line.substr(0, tab));
-            const auto name = unescape(line.substr(tab + 1));
-            if (!type || !name) return std::nullopt;
+            const auto name = unescape(line.substr(tab + 1, tab2 - tab - 1));
+            const auto vendor_name = unescape(line.substr(tab2 + 1));
+            if (!type || !name || !vendor_name) return std::nullopt;
             d.type = *type;
             d.name = *name;
+            d.vendor_name = *vendor_name;
             current->devices.push_back(std::move(d));
         } else {
             return std::nullopt;
@@ -166,8 +176,10 @@ std::string format_index_cache(const IndexCache& cache) {
         for (const IndexedDevice& d : entry.devices) {
             out += "D " + format_optional(d.vendor_id) + ' ' + format_optional(d.product_code) + ' ' +
                    format_optional(d.revision_no) + ' ' + std::to_string(d.offset) + ' ' + std::to_string(d.line) + ' ' +
-                   std::to_string(d.column) + ' ' + std::to_string(d.ordinal) + ' ' + escape(d.type) + '\t' + escape(d.name) +
+                   std::to_string(d.column) + ' ' + std::to_string(d.ordinal) + ' ' + escape(d.type) + '\t' + escape(d.name) + '\t' + escape(d.vendor_name) +
                    '\n';
+            for (const HiddenIdentity& h : d.hides)
+                out += "H " + format_optional(h.product_code) + ' ' + format_optional(h.revision_no) + '\n';
         }
     }
     const std::uint64_t checksum = fnv1a(out);

@@ -5,10 +5,11 @@
 // checksum (FNV-1a, 64 bits) of every line before it, so that an edited cache, however
 // well-formed, is not trusted either.
 //
-//   libesi-esi-index 2
+//   libesi-esi-index 3
 //   F <size> <mtime_ns> <ctime_ns> <inode> <device count> <path>
 //   P <problem>                                   (optional, after F)
-//   D <vendor|-> <product|-> <revision|-> <offset> <line> <column> <ordinal> <type>\t<name>
+//   D <vendor|-> <product|-> <revision|-> <offset> <line> <column> <ordinal> <type>\t<name>\t<vendor name>
+//   H <product|-> <revision|->                    (one per HideType of the device before it)
 //   end <file count> <checksum, 16 hex digits>
 //
 // Text fields escape '\\', tab and newline as \\\\, \\t and \\n.

@@ -113,7 +113,10 @@ CachedFile scan_yaml_source(const FoundFile& found) {
     for (const Device* device : select_devices(*loaded.document, std::nullopt)) {
         IndexedDevice d;
         const EtherCATInfo* info = loaded.document->info_of(*device);
-        if (info && info->vendor) d.vendor_id = info->vendor->id;
+        if (info && info->vendor) {
+            d.vendor_id = info->vendor->id;
+            d.vendor_name = primary_text(info->vendor->names);
+        }
         d.product_code = device->type.product_code;
         d.revision_no = device->type.revision_no;
         d.type = device->type.text;
@@ -173,10 +176,12 @@ CachedFile scan_file(const FoundFile& found) {
         d.revision_no = s.revision_no;
         d.type = std::move(s.type);
         d.name = std::move(s.name);
+        d.vendor_name = std::move(s.vendor_name);
         d.offset = s.offset;
         d.line = s.pos.line;
         d.column = s.pos.column;
         d.ordinal = s.ordinal;
+        d.hides = std::move(s.hides);
         out.devices.push_back(std::move(d));
     }
     return out;
@@ -201,7 +206,7 @@ std::optional<fs::path> default_cache_dir() {
     return std::nullopt;
 }
 
-fs::path index_cache_file(const fs::path& cache_dir) { return cache_dir / "esi-index.v2"; }
+fs::path index_cache_file(const fs::path& cache_dir) { return cache_dir / "esi-index.v3"; }
 
 IndexResult build_library_index(const std::vector<fs::path>& roots, const IndexOptions& options) {
     IndexResult result;
@@ -274,7 +279,7 @@ bool index_agrees_with_files(const LibraryIndex& index, const std::vector<const 
             if (d->ordinal >= now.devices.size()) return false;
             const IndexedDevice& fresh = now.devices[d->ordinal];
             if (fresh.vendor_id != d->vendor_id || fresh.product_code != d->product_code || fresh.revision_no != d->revision_no ||
-                fresh.type != d->type || fresh.offset != d->offset)
+                fresh.type != d->type || fresh.offset != d->offset || fresh.hides != d->hides)
                 return false;
         }
     }

@@ -193,7 +193,7 @@ BuildResult build_network(const NetworkSpec& spec, const LibraryIndex& index) {
     }
     if (spec.slaves.empty())
         diagnostics.emplace(Severity::warning, "net-empty", "the network has no slaves; only the master is configured", spec.path, {});
-    check_topology(net, spec, diagnostics);
+    resolve_topology(net, spec, diagnostics);
     if (diagnostics.has_errors()) return result;
 
     for (NetworkSlave& s : net.slaves)

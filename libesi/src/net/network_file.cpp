@@ -292,6 +292,14 @@ private:
         if (const Node* n = f->find("limits")) s.limits = yaml::read_limits(reader_, *n);
         if (const Node* n = f->find("ros2_interfaces")) s.ros2_interfaces = read_ros2_interfaces(reader_, *n);
         if (const Node* n = f->find("force_entries")) s.force_entries = read_forced_entries(reader_, *n);
+        if (const Node* n = f->find("previous_slave")) {
+            s.previous_slave = reader_.text(*n, "previous_slave");
+            s.previous_slave_pos = n->pos();
+        }
+        if (const Node* n = f->find("previous_port")) {
+            s.previous_port = reader_.text(*n, "previous_port");
+            s.previous_port_pos = n->pos();
+        }
     }
 
     yaml::Reader reader_;

@@ -8,7 +8,7 @@ constexpr std::string_view root_keys[] = {"esi", "master", "slaves"};
 constexpr std::string_view master_keys[] = {"name", "cycle_time_us", "dc", "source_mac", "lcec_fork"};
 constexpr std::string_view slave_keys[] = {"name",   "device",      "vendor_id", "product_code", "revision", "esi_file", "alias", "pdos",
                                            "pdo_mapping", "pdo_entries", "dc",   "modules",  "sdos",  "limits",
-                                           "ros2_interfaces", "force_entries"};
+                                           "ros2_interfaces", "force_entries", "previous_slave", "previous_port"};
 constexpr std::string_view module_keys[] = {"slot", "module"};
 constexpr std::string_view ros2_interface_keys[] = {"name", "factor", "offset", "default"};
 constexpr std::string_view sdo_keys[] = {"index", "subindex", "value", "type", "data", "transition", "complete_access", "comment"};

@@ -102,6 +102,64 @@ Diagnostic unknown_device(const LibraryIndex& index, const DeviceQuery& q, const
     return d;
 }
 
+// Which of `found` (one product) a device of the library hides: its vendor's catalogue lists
+// that device in place of the revision (ETG.2000 HideType), as TwinCAT's catalogue does. This is
+// how a current catalogue retires a legacy one: Beckhoff's pre-ETG.2000 "EtherCAT Terminals"
+// file numbers the EK1100 0x270B0000 (ProductRevision EK1100-0000-9995), above every current
+// revision, and the current EK11xx file's revision-0 EK1100 carries
+// <HideType RevisionNo="#x270b0000" ProductRevision="EK1100-0000-9995"/>. The value is the
+// hiding device (the first in index order).
+std::map<const IndexedDevice*, const IndexedDevice*> hidden_by(const LibraryIndex& index,
+                                                               const std::vector<const IndexedDevice*>& found) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, const IndexedDevice*> hiders;  // (product, revision) -> hider
+    const std::optional<std::uint32_t> vendor = found.front()->vendor_id;
+    for (const IndexedDevice& d : index.devices) {
+        if (d.hides.empty() || d.vendor_id != vendor) continue;
+        for (const HiddenIdentity& h : d.hides) {
+            if (!h.product_code || !h.revision_no) continue;
+            if (h.product_code == d.product_code && h.revision_no == d.revision_no) continue;  // hides itself: no statement
+            hiders.emplace(std::pair{*h.product_code, *h.revision_no}, &d);
+        }
+    }
+    std::map<const IndexedDevice*, const IndexedDevice*> out;
+    for (const IndexedDevice* d : found) {
+        if (!d->product_code || !d->revision_no) continue;
+        if (const auto it = hiders.find({*d->product_code, *d->revision_no}); it != hiders.end()) out.emplace(d, it->second);
+    }
+    return out;
+}
+
+// The info that says which revision was taken, from which file, and why: the highest, and the
+// higher ones passed over because a catalogue hides them.
+Diagnostic revision_choice(const LibraryIndex& index, const std::vector<const IndexedDevice*>& found, const IndexedDevice& best,
+                           const std::map<const IndexedDevice*, const IndexedDevice*>& hidden, std::size_t revision_count,
+                           const std::string& path, SourcePos pos) {
+    std::vector<const IndexedDevice*> passed;  // hidden revisions above the one taken, one per revision
+    std::set<std::uint32_t> seen;
+    for (const IndexedDevice* d : found)
+        if (hidden.contains(d) && d->revision_no.value_or(0) > best.revision_no.value_or(0) && seen.insert(d->revision_no.value_or(0)).second)
+            passed.push_back(d);
+    std::stable_sort(passed.begin(), passed.end(),
+                     [](const IndexedDevice* a, const IndexedDevice* b) { return a->revision_no.value_or(0) > b->revision_no.value_or(0); });
+    const std::string& file = index.file_of(best).path;
+    Diagnostic d{Severity::info, "net-device-revision",
+                 passed.empty()
+                     ? fmt::format("no revision given: using the highest, {}, of {} found, from {}", hex32(best.revision_no), revision_count, file)
+                     : fmt::format("no revision given: using {} from {}, the highest of {} found that no current catalogue hides "
+                                   "({} higher {} passed over)",
+                                   hex32(best.revision_no), file, revision_count, passed.size(), passed.size() == 1 ? "revision is" : "revisions are"),
+                 path, pos, {}};
+    d.notes.push_back(note_for(index, best, "chosen: " + describe_identity(best)));
+    for (const IndexedDevice* p : passed) {
+        const IndexedDevice& hider = *hidden.at(p);
+        d.notes.push_back(note_for(index, *p,
+                                   fmt::format("passed over: {} is a legacy revision: {} (revision {}) at {}:{} lists it as a HideType",
+                                               hex32(p->revision_no), hider.type, hex32(hider.revision_no), index.file_of(hider).path,
+                                               hider.line)));
+    }
+    return d;
+}
+
 }  // namespace
 
 std::string describe_identity(const IndexedDevice& d) {
@@ -146,20 +204,23 @@ Resolution resolve_device(const LibraryIndex& index, const DeviceQuery& q, const
         return ra != rb ? ra < rb : a->file != b->file ? a->file < b->file : a->ordinal < b->ordinal;
     };
     std::stable_sort(found.begin(), found.end(), earlier);
-    const IndexedDevice* best = found.front();
-    for (const IndexedDevice* d : found)
-        if (d->revision_no.value_or(0) > best->revision_no.value_or(0)) best = d;
-    for (const IndexedDevice* d : found)
-        if (d != best && d->revision_no == best->revision_no && d->vendor_id == best->vendor_id) result.duplicates.push_back(d);
     std::set<std::uint32_t> revisions;
     for (const IndexedDevice* d : found) revisions.insert(d->revision_no.value_or(0));
-    if (!q.revision_no && revisions.size() > 1) {
-        result.diagnostics.emplace(Severity::info, "net-device-revision",
-                                   fmt::format("no revision given: using the highest, {}, of {} found", hex32(best->revision_no),
-                                               revisions.size()),
-                                   path, pos)
-            .notes.push_back(note_for(index, *best, "chosen: " + describe_identity(*best)));
+    // Without a revision: the highest that no catalogue hides. A revision is only hidden when
+    // several are found, so a lone one (or an explicit revision) never costs the scan.
+    std::map<const IndexedDevice*, const IndexedDevice*> hidden;
+    if (!q.revision_no && revisions.size() > 1) hidden = hidden_by(index, found);
+    const IndexedDevice* best = nullptr;
+    for (const IndexedDevice* d : found)
+        if (!hidden.contains(d) && (!best || d->revision_no.value_or(0) > best->revision_no.value_or(0))) best = d;
+    if (!best) {  // every revision hides another: the catalogues do not say which is current
+        hidden.clear();
+        for (const IndexedDevice* d : found)
+            if (!best || d->revision_no.value_or(0) > best->revision_no.value_or(0)) best = d;
     }
+    for (const IndexedDevice* d : found)
+        if (d != best && d->revision_no == best->revision_no && d->vendor_id == best->vendor_id) result.duplicates.push_back(d);
+    if (!q.revision_no && revisions.size() > 1) result.diagnostics.add(revision_choice(index, found, *best, hidden, revisions.size(), path, pos));
     result.device = best;
     return result;
 }

@@ -70,8 +70,9 @@ void build_coe_init_cmds(SlaveContext& context, const MasterSpec& master);
 // ros2_interfaces name entries the slave maps (ros2_channels.cpp).
 void check_ros2_interfaces(SlaveContext& context);
 
-// E-Bus terminals after Ethernet-only devices and the converse (topology.cpp).
-void check_topology(const Network& network, const NetworkSpec& spec, Diagnostics& diagnostics);
+// Which slave and port each slave hangs off (previous_slave/previous_port, else the slave listed
+// before), checked against the devices' ports and the order the frame visits them (topology.cpp).
+void resolve_topology(Network& network, const NetworkSpec& spec, Diagnostics& diagnostics);
 
 // representable.cpp: refuse the slave when the reader could not read a value of its device
 // (`devices`: the file's devices, to tell whose an error is) or when a value does not fit the

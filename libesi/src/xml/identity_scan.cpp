@@ -237,6 +237,9 @@ private:
                 device_->product_code = number_value(decoded(attribute(*tag, "ProductCode")));
                 device_->revision_no = number_value(decoded(attribute(*tag, "RevisionNo")));
                 if (!tag->self_closing) device_->type = leaf_text(tag->end);
+            } else if (tag->name == "HideType") {
+                hides_.push_back({number_value(decoded(attribute(*tag, "ProductCode"))),
+                                  number_value(decoded(attribute(*tag, "RevisionNo")))});
             } else if (tag->name == "Name") {
                 const std::string_view lcid = attribute(*tag, "LcId");
                 const bool english = trim(lcid) == "1033";
@@ -252,8 +255,17 @@ private:
             }
         } else if (tag->name == "Id" && parent_is("Vendor") && parent_is("EtherCATInfo", 1) && !tag->self_closing) {
             vendor_id_ = number_value(leaf_text(tag->end));
+        } else if (tag->name == "Name" && parent_is("Vendor") && parent_is("EtherCATInfo", 1) && !tag->self_closing) {
+            const bool english = trim(attribute(*tag, "LcId")) == "1033";
+            if (!have_vendor_name_ || (english && !english_vendor_name_)) {
+                vendor_name_ = leaf_text(tag->end);
+                have_vendor_name_ = true;
+                english_vendor_name_ = english;
+            }
         } else if (tag->name == "EtherCATInfo") {
             vendor_id_.reset();
+            vendor_name_.clear();
+            have_vendor_name_ = english_vendor_name_ = false;
         } else if (tag->name == "Device" && !device_ && parent_is("Devices") && parent_is("Descriptions", 1)) {
             device_ = ScannedDevice{};
             device_->offset = lt;
@@ -261,6 +273,7 @@ private:
             device_->ordinal = ordinal_++;
             device_depth_ = stack_.size();
             have_name_ = english_name_ = have_type_ = false;
+            hides_.clear();
             if (tag->self_closing) {
                 finish_device(result);
                 return tag->end;
@@ -310,6 +323,12 @@ private:
 
     void finish_device(IdentityScan& result) {
         device_->vendor_id = vendor_id_;
+        device_->vendor_name = vendor_name_;
+        // A HideType without ProductCode names a revision of the device's own product.
+        for (HiddenIdentity& h : hides_)
+            if (!h.product_code) h.product_code = device_->product_code;
+        device_->hides = std::move(hides_);
+        hides_.clear();
         result.devices.push_back(std::move(*device_));
         device_.reset();
     }
@@ -335,7 +354,11 @@ private:
     std::string error_;
     std::vector<std::string_view> stack_;
     std::optional<std::uint32_t> vendor_id_;
+    std::string vendor_name_;
+    bool have_vendor_name_ = false;
+    bool english_vendor_name_ = false;
     std::optional<ScannedDevice> device_;
+    std::vector<HiddenIdentity> hides_;  // of the Device being read (its Type may come after them)
     std::size_t device_depth_ = 0;
     std::size_t ordinal_ = 0;
     bool have_name_ = false;

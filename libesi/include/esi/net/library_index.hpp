@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "esi/diagnostic.hpp"
+#include "esi/xml/identity_scan.hpp"
 
 namespace esi::net {
 
@@ -37,11 +38,15 @@ struct IndexedDevice {
     std::optional<std::uint32_t> revision_no;
     std::string type;  // Type text
     std::string name;  // English Name
+    std::string vendor_name;  // the file's Vendor/Name (English, else the first)
     std::size_t file = 0;  // into LibraryIndex::files
     std::size_t offset = 0;
     std::uint32_t line = 0;
     std::uint32_t column = 0;
     std::size_t ordinal = 0;  // place among the file's devices
+    // The device's HideType elements: revisions its vendor's catalogue shows it in place of
+    // (resolve.cpp passes them over when no revision is asked for).
+    std::vector<HiddenIdentity> hides;
 };
 
 struct LibraryIndex {

@@ -146,6 +146,10 @@ struct NetworkSlave {
     std::string esi_path;
     std::uint32_t vendor_id = 0, product_code = 0, revision = 0;
     std::string physics;
+    // Where it hangs off (topology.cpp): the slave before it in the tree and that slave's port
+    // (1 = B, 2 = C, 3 = D); none for the first slave.
+    std::optional<std::size_t> previous;
+    std::size_t previous_port = 1;
     RevisionCheck revision_check = RevisionCheck::none;
     bool identification_reg134 = false;
     std::vector<ModuleInSlot> modules;

@@ -122,6 +122,12 @@ struct SlaveSpec {
     Limits limits;  // the device family's constraints (`limits:`, as in device sources)
     std::vector<Ros2InterfaceSpec> ros2_interfaces;
     std::vector<ForcedEntry> force_entries;
+    // Topology (topology.cpp): the slave this one hangs off (default: the one listed before)
+    // and that slave's port (B, C or D; default: its first free port of this one's physics).
+    std::optional<std::string> previous_slave;
+    SourcePos previous_slave_pos;
+    std::optional<std::string> previous_port;
+    SourcePos previous_port_pos;
 };
 
 // The most slaves one network holds: slave n gets station address 1001 + n, a 16-bit register
