@@ -1,0 +1,4 @@
+#include "navigate/index.hpp"
+namespace esi::navigate {
+void index_yaml(Index&) {}
+}
