@@ -21,6 +21,11 @@ std::string format_coe_code(std::uint16_t code) {
     return hex.replace(0, 2, "0x");
 }
 
+std::string bits_text(std::string_view bit_size) {
+    if (bit_size.empty()) return {};
+    return std::string(bit_size) + (bit_size == "1" ? " bit" : " bits");
+}
+
 std::string code(std::string_view text) {
     if (text.empty()) return {};
     // A backtick inside the value needs a longer fence (CommonMark code spans).

@@ -13,6 +13,8 @@ namespace esi::navigate {
 [[nodiscard]] std::string format_index(std::uint32_t index, bool yaml);
 [[nodiscard]] std::string format_subindex(std::uint32_t subindex, bool yaml);
 [[nodiscard]] std::string format_coe_code(std::uint16_t code);
+// "1 bit", "16 bits"; empty stays empty.
+[[nodiscard]] std::string bits_text(std::string_view bit_size);
 // `text` as Markdown inline code; empty stays empty.
 [[nodiscard]] std::string code(std::string_view text);
 // "device EL1008" / "module …": how a hover names the scope.

@@ -19,11 +19,6 @@ void add_fact(std::string& out, std::string_view label, std::string_view value) 
     out += '\n';
 }
 
-std::string bits_text(std::string_view bit_size) {
-    if (bit_size.empty()) return {};
-    return std::string(bit_size) + (bit_size == "1" ? " bit" : " bits");
-}
-
 std::string object_hover(const Index& index, const Scope& scope, const Occurrence& occurrence) {
     const ObjectDef* object = scope.find_object(occurrence.key);
     const std::string shown = format_index(occurrence.key, index.yaml);
@@ -147,6 +142,7 @@ std::optional<Hover> hover(const Index& index, Position position) {
         case Target::pdo: result.markdown = pdo_hover(index, scope, occurrence->key); break;
         case Target::sync_manager: result.markdown = sm_hover(scope, occurrence->key); break;
     }
+    while (result.markdown.ends_with("\n\n")) result.markdown.pop_back();
     return result;
 }
 

@@ -55,14 +55,24 @@ std::optional<std::uint32_t> Index::scope_at(std::size_t offset) const {
 }
 
 std::optional<Span> Index::definition_of(const Occurrence& occurrence) const {
+    const auto target = find_definition(occurrence);
+    // What derivation adds to a YAML source has no text to go to.
+    if (!target || target->empty()) return std::nullopt;
+    return target;
+}
+
+std::optional<Span> Index::find_definition(const Occurrence& occurrence) const {
     if (occurrence.scope >= scopes.size()) return std::nullopt;
     const Scope& scope = scopes[occurrence.scope];
     switch (occurrence.target) {
         case Target::object: {
             const ObjectDef* object = scope.find_object(occurrence.key);
             if (!object) return std::nullopt;
-            // An entry mapping a sub-item points at the sub-item of the object's type.
+            // An entry mapping a sub-item points at the sub-item: where the document writes it
+            // for this object, else in the object's type.
             if (occurrence.sub && *occurrence.sub != 0) {
+                for (const auto& [subindex, span] : object->sub_decls)
+                    if (subindex == *occurrence.sub) return span;
                 if (const DataTypeDef* type = scope.find_data_type(object->type))
                     for (const auto& item : type->sub_items)
                         if (item.subindex == occurrence.sub && !item.decl.empty()) return item.decl;

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,6 +55,9 @@ struct ObjectDef {
     std::string default_value;
     // Object/Info/SubItem: defaults per sub-item name.
     std::vector<std::pair<std::string, std::string>> sub_defaults;
+    // Where the document itself writes a sub-item of this object (a YAML source's `entries` keys);
+    // preferred over the DataType's sub-item as a definition.
+    std::vector<std::pair<std::uint32_t, Span>> sub_decls;
     Span decl;  // the Index text
     Span element;
 };
@@ -145,11 +149,17 @@ public:
     [[nodiscard]] std::optional<Span> definition_of(const Occurrence& occurrence) const;
     [[nodiscard]] bool same_target(const Occurrence& a, const Occurrence& b) const;
     void finish();  // sorts the occurrences and builds the line map
+
+private:
+    [[nodiscard]] std::optional<Span> find_definition(const Occurrence& occurrence) const;
 };
 
 // The front ends. Both leave the index empty when the text is not their format.
 void index_xml(Index& index);
 void index_yaml(Index& index);
+
+// Completion items for the basic types not in `seen` (completion.cpp).
+void add_basic_types(const Range& replace, std::set<std::string_view>& seen, std::vector<CompletionItem>& out);
 
 // An object index from its text ("#x6000", "0x6000", "24576"); nullopt when it is none.
 [[nodiscard]] std::optional<std::uint32_t> parse_index_number(std::string_view text);

@@ -35,7 +35,8 @@ struct CompletionItem {
     std::string label;        // "#x6000", "UINT", "Entry"
     CompletionKind kind = CompletionKind::value;
     std::string detail;       // the object's name, a DataType's size …
-    std::string insert_text;  // what replaces the token at the cursor
+    std::string insert_text;  // what replaces `replace`
+    Range replace;            // the partial token at the cursor (empty at a blank)
 };
 
 enum class SymbolKind { device, module, sync_manager, pdo, pdo_entry, object, data_type };
