@@ -54,5 +54,25 @@ TEST(LineMap, PositionsPastTheEnd) {
     EXPECT_FALSE(empty.offset_of({7, 0}).has_value());
 }
 
+TEST(LineMap, LongLinesAgreeWithACountFromTheLineStart) {
+    // A single-line file (some vendor files are): positions come from checkpoints inside the line.
+    std::string text = "<a>\n";
+    for (int i = 0; i < 3000; ++i) text += i % 7 == 0 ? "\xC3\xA4" : i % 11 == 0 ? "\xF0\x9F\x98\x80" : "x";
+    text += "\nend";
+    const LineMap lines(text);
+    std::uint32_t units = 0;
+    std::size_t offset = 4;
+    while (offset < text.size() - 4) {
+        ASSERT_EQ(lines.position_of(offset), (Position{1, units})) << offset;
+        ASSERT_EQ(lines.offset_of(Position{1, units}), offset) << units;
+        const unsigned char lead = static_cast<unsigned char>(text[offset]);
+        const std::size_t length = lead < 0x80 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
+        units += length == 4 ? 2 : 1;
+        offset += length;
+    }
+    EXPECT_EQ(lines.position_of(text.size()), (Position{2, 3}));
+    EXPECT_EQ(lines.offset_of(Position{1, 99999}), text.size() - 4);
+}
+
 }  // namespace
 }  // namespace esi::navigate

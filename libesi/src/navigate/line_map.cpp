@@ -41,6 +41,43 @@ LineMap::LineMap(std::string_view text) : text_(text) {
         }
         starts_.push_back(static_cast<std::uint32_t>(i));
     }
+    for (std::size_t line = 0; line < starts_.size(); ++line) {
+        const std::size_t end = line_end(line);
+        std::size_t at = starts_[line];
+        if (end - at <= checkpoint_spacing) continue;
+        std::uint32_t units = 0;
+        std::size_t next = at + checkpoint_spacing;
+        while (at < end) {
+            if (at >= next) {
+                checkpoints_.push_back(Checkpoint{static_cast<std::uint32_t>(at), units});
+                next = at + checkpoint_spacing;
+            }
+            const std::size_t length = std::min(sequence_length(static_cast<unsigned char>(text_[at])), end - at);
+            units += length == 4 ? 2 : 1;
+            at += length;
+        }
+    }
+}
+
+LineMap::Checkpoint LineMap::start_for_offset(std::size_t line, std::size_t offset) const {
+    const Checkpoint line_start{starts_[line], 0};
+    if (checkpoints_.empty()) return line_start;
+    auto after = std::upper_bound(checkpoints_.begin(), checkpoints_.end(), offset,
+                                  [](std::size_t value, const Checkpoint& c) { return value < c.offset; });
+    if (after == checkpoints_.begin()) return line_start;
+    const Checkpoint& candidate = *(after - 1);
+    return candidate.offset >= starts_[line] ? candidate : line_start;
+}
+
+LineMap::Checkpoint LineMap::start_for_units(std::size_t line, std::uint32_t units) const {
+    const Checkpoint line_start{starts_[line], 0};
+    // The line's checkpoints are contiguous, their units increasing.
+    auto first = std::lower_bound(checkpoints_.begin(), checkpoints_.end(), std::size_t{starts_[line]},
+                                  [](const Checkpoint& c, std::size_t value) { return c.offset < value; });
+    auto beyond = std::lower_bound(first, checkpoints_.end(), line_end(line),
+                                   [](const Checkpoint& c, std::size_t value) { return c.offset < value; });
+    auto last = std::partition_point(first, beyond, [&](const Checkpoint& c) { return c.units <= units; });
+    return last == first ? line_start : *(last - 1);
 }
 
 std::size_t LineMap::line_end(std::size_t line) const {
@@ -52,9 +89,10 @@ std::size_t LineMap::line_end(std::size_t line) const {
 
 std::optional<std::size_t> LineMap::offset_of(Position position) const {
     if (position.line >= starts_.size()) return std::nullopt;
-    std::size_t offset = starts_[position.line];
+    const Checkpoint start = start_for_units(position.line, position.character);
+    std::size_t offset = start.offset;
     const std::size_t end = line_end(position.line);
-    std::uint32_t units = 0;
+    std::uint32_t units = start.units;
     while (offset < end) {
         const std::size_t length = std::min(sequence_length(static_cast<unsigned char>(text_[offset])), end - offset);
         const std::uint32_t width = length == 4 ? 2 : 1;  // beyond the BMP: a surrogate pair
@@ -69,9 +107,10 @@ Position LineMap::position_of(std::size_t offset) const {
     offset = std::min(offset, text_.size());
     const auto after = std::upper_bound(starts_.begin(), starts_.end(), offset);
     const auto line = static_cast<std::size_t>(after - starts_.begin()) - 1;
-    std::size_t i = starts_[line];
     const std::size_t end = std::min(offset, line_end(line));
-    std::uint32_t units = 0;
+    const Checkpoint start = start_for_offset(line, end);
+    std::size_t i = start.offset;
+    std::uint32_t units = start.units;
     while (i < end) {
         const std::size_t length = sequence_length(static_cast<unsigned char>(text_[i]));
         if (i + length > end && i + length > offset) break;  // offset inside this character

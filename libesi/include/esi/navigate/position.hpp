@@ -55,8 +55,22 @@ private:
     // The end of a line's content: before its terminator.
     [[nodiscard]] std::size_t line_end(std::size_t line) const;
 
+    // A point inside a long line whose UTF-16 column is known, so that a position in a
+    // single-line multi-MB file costs a short walk from the nearest checkpoint, not from the
+    // line's start. Only lines longer than the spacing have them.
+    struct Checkpoint {
+        std::uint32_t offset;
+        std::uint32_t units;  // UTF-16 code units from the start of its line
+    };
+    static constexpr std::size_t checkpoint_spacing = 1024;
+
+    // The checkpoint of `line` nearest before the offset (or the units), as a starting point.
+    [[nodiscard]] Checkpoint start_for_offset(std::size_t line, std::size_t offset) const;
+    [[nodiscard]] Checkpoint start_for_units(std::size_t line, std::uint32_t units) const;
+
     std::string_view text_;
     std::vector<std::uint32_t> starts_;  // inputs are bounded by esi::max_input_bytes (< 4 GiB)
+    std::vector<Checkpoint> checkpoints_;  // by offset
 };
 
 }  // namespace esi::navigate
