@@ -1,6 +1,7 @@
 // Building the navigation index of an editor's document (esi::navigate::build_index) and
-// answering requests on it, on the largest files of the corpus, a 1 MB slice of one and
-// optionally a file given on the command line (a 40 MB catalogue from big_catalogue_rss.sh):
+// answering requests on it: a 1 MB slice of a corpus catalogue, the largest corpus files and a
+// 40 MB catalogue merged from the Devices of the corpus catalogues (as big_catalogue_rss.sh
+// builds one), or the files given on the command line:
 //   navigate_index [FILE...]
 // Prints best-of-5 times and the peak RSS; see docs/performance.md.
 
@@ -8,6 +9,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "bench_support.hpp"
 #include "esi/encoding.hpp"
@@ -50,12 +52,31 @@ std::string decoded(const std::filesystem::path& path) {
     return esi::decode_xml_bytes_owned(std::move(*bytes)).utf8;
 }
 
-// The first `bytes` of a document cut after a whole Device, closed again: a 1 MB file as it
-// is found in the corpus (one vendor's catalogue of a few devices).
+// The first megabyte of a catalogue, cut after a whole Device and closed again: a 1 MB file as
+// the corpus has them (one vendor's catalogue of a few devices). Empty when no device ends
+// between 1 and 1.25 MB.
 std::string one_megabyte_of(const std::string& text) {
     const std::size_t cut = text.find("</Device>", 1u << 20);
-    if (cut == std::string::npos) return text;
+    if (cut == std::string::npos || cut > (5u << 20) / 4) return {};
     return text.substr(0, cut + 9) + "\n</Devices></Descriptions></EtherCATInfo>\n";
+}
+
+// The Devices of the given catalogues, taken again until the whole reaches `bytes`.
+std::string merged_catalogue(const std::vector<std::string>& catalogues, std::size_t bytes) {
+    std::string devices;
+    while (devices.size() < bytes) {
+        const std::size_t before = devices.size();
+        for (const std::string& text : catalogues) {
+            const std::size_t begin = text.find("<Devices>");
+            const std::size_t end = text.rfind("</Devices>");
+            if (begin == std::string::npos || end == std::string::npos || end < begin) continue;
+            devices.append(text, begin + 9, end - begin - 9);
+            if (devices.size() >= bytes) break;
+        }
+        if (devices.size() == before) return {};
+    }
+    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<EtherCATInfo><Descriptions><Devices>" + devices +
+           "</Devices></Descriptions></EtherCATInfo>\n";
 }
 
 }  // namespace
@@ -65,13 +86,21 @@ int main(int argc, char** argv) {
         for (int i = 1; i < argc; ++i) measure(argv[i], decoded(argv[i]));
         return 0;
     }
-    const auto files = esi::bench::largest_corpus_files(3);
+    const auto files = esi::bench::largest_corpus_files(12);
     if (files.empty()) {
         std::printf("navigate_index: the corpus is absent; nothing to measure\n");
         return 0;
     }
-    const std::string largest = decoded(files.front());
-    measure("1 MB slice of " + files.front().filename().string(), one_megabyte_of(largest));
-    for (const auto& file : files) measure(file.filename().string(), decoded(file));
+    std::vector<std::string> texts;
+    for (const auto& file : files) texts.push_back(decoded(file));
+    for (std::size_t i = 0; i < texts.size(); ++i)
+        if (const std::string slice = one_megabyte_of(texts[i]); !slice.empty()) {
+            measure("1 MB slice of " + files[i].filename().string(), slice);
+            break;
+        }
+    for (std::size_t i = 0; i < 3 && i < texts.size(); ++i) measure(files[i].filename().string(), texts[i]);
+    const std::string big = merged_catalogue(texts, 40u * 1000 * 1000);
+    texts.clear();
+    if (!big.empty()) measure("40 MB catalogue (corpus Devices merged)", big);
     return 0;
 }
