@@ -63,6 +63,25 @@ TEST(NavigateBadInput, TruncatedFileStillNavigatesWhatParsed) {
     EXPECT_EQ(symbols[0].range.end, LineMap(part).position_of(part.size()));
 }
 
+TEST(NavigateBadInput, DeepNestingInsideADevice) {
+    // pugixml parses any depth; the index must not recurse along it.
+    std::string text = "<EtherCATInfo><Descriptions><Devices><Device><Type>D</Type><Sm>Inputs</Sm>";
+    for (int i = 0; i < 200000; ++i) text += "<a>";
+    for (int i = 0; i < 200000; ++i) text += "</a>";
+    text += "</Device></Devices></Descriptions></EtherCATInfo>";
+    const auto index = build_index(text, "deep.xml");
+    const auto symbols = outline(*index);
+    ASSERT_EQ(symbols.size(), 1u);
+    EXPECT_EQ(symbols[0].range.end, LineMap(text).position_of(text.size() - 40));
+    EXPECT_TRUE(hover(*index, test::at(text, "Inputs")));
+    (void)complete(*index, test::at(text, "<a><a>", 0, 3));
+    // Unclosed: every element ends at the end of the text.
+    const std::string open = text.substr(0, text.find("</a>"));
+    const auto open_index = build_index(open, "open.xml");
+    ASSERT_EQ(outline(*open_index).size(), 1u);
+    EXPECT_EQ(outline(*open_index)[0].range.end, LineMap(open).position_of(open.size()));
+}
+
 TEST(NavigateBadInput, PositionsPastTheEndGiveNothing) {
     const std::string text = esi::test::read_text(esi::test::source_dir() / "samples/esi/example-digital-io.xml");
     const auto index = build_index(text, "x.xml");

@@ -97,7 +97,7 @@ TEST_F(XmlNavigation, HoverOnSmShowsRoleAddressAndMapping) {
     ASSERT_TRUE(result);
     EXPECT_EQ(result->markdown,
               "**SM2 Outputs** (process data outputs, master to device)\n\n- start address: #x1100\n"
-              "- default size: 1 bytes\n- control byte: #x64\n- enable: 1\n- mapped by default: 8 bits (1 bytes)\n"
+              "- default size: 1 byte\n- control byte: #x64\n- enable: 1\n- mapped by default: 8 bits (1 byte)\n"
               "  - RxPdo #x1600 Outputs (8 bits)\n");
 }
 

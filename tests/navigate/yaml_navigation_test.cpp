@@ -102,5 +102,36 @@ TEST_F(YamlNavigation, SourceWithErrorsStillKnowsWrittenIndices) {
     EXPECT_EQ(result->markdown, "Object 0x6001 is not in the dictionary of device X.\n");
 }
 
+TEST_F(YamlNavigation, WrittenSmsAndPdoSmReferences) {
+    text = "vendor: { id: 0x2, name: V }\n"
+           "devices:\n"
+           "  - type: X\n"
+           "    name: X device\n"
+           "    product_code: 1\n"
+           "    revision: 1\n"
+           "    objects:\n"
+           "      0x7000: { name: Out, type: UINT, access: rw, pdo: rx }\n"
+           "    sms:\n"
+           "      - { type: Outputs, address: 0x1100, control_byte: 0x64, size: 2 }\n"
+           "      - { type: Inputs, address: 0x1180, control_byte: 0x20 }\n"
+           "    rxpdo:\n"
+           "      - { index: 0x1600, name: Out, sm: 0, entries: [0x7000] }\n";
+    index = build_index(text, "sm.yaml");
+    const auto found = definition(*index, at(text, "sm: 0", 0, 4));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].range, token_range(text, "{ type: Outputs", "Outputs"));
+    const auto result = hover(*index, at(text, "type: Outputs", 0, 7));
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->markdown,
+              "**SM0 Outputs** (process data outputs, master to device)\n\n- start address: 0x1100\n"
+              "- default size: 2 bytes\n- control byte: 0x64\n- enable: 1\n- mapped by default: 16 bits (2 bytes)\n"
+              "  - RxPdo 0x1600 Out (16 bits)\n");
+    const auto symbols = outline(*index);
+    ASSERT_EQ(symbols.size(), 1u);
+    ASSERT_GE(symbols[0].children.size(), 2u);
+    EXPECT_EQ(symbols[0].children[0].name, "SM0");
+    EXPECT_EQ(symbols[0].children[1].name, "SM1");
+}
+
 }  // namespace
 }  // namespace esi::navigate

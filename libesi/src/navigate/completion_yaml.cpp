@@ -63,23 +63,22 @@ std::vector<CompletionItem> complete_yaml(const Index& index, std::size_t offset
     const std::size_t line_start = *index.lines.offset_of(Position{position.line, 0});
     std::string_view line = text.substr(line_start, offset - line_start);
     YamlSlot slot = slot_of(line);
-    // A block sequence item ("      - 0x60") under `entries:` on an earlier line.
-    if (slot == YamlSlot::none && line.find_first_not_of(' ') != std::string_view::npos &&
-        line[line.find_first_not_of(' ')] == '-') {
-        const std::size_t previous_end = line_start > 0 ? line_start - 1 : 0;
-        const std::size_t previous_start = text.rfind('\n', previous_end > 0 ? previous_end - 1 : 0);
-        std::size_t look = previous_start == std::string_view::npos ? 0 : previous_start + 1;
-        // Walk up over sibling items to the key that holds them.
-        while (look > 0) {
-            const std::string_view above = text.substr(look, previous_end - look);
-            const std::size_t first = above.find_first_not_of(' ');
-            if (first == std::string_view::npos || above[first] != '-') {
-                if (above.find("entries:") != std::string_view::npos) slot = YamlSlot::object;
-                break;
-            }
-            const std::size_t before = text.rfind('\n', look >= 2 ? look - 2 : 0);
-            if (before == std::string_view::npos) break;
-            look = before + 1;
+    // A block sequence item ("      - 0x60") under `entries:` on a line above: walk up over the
+    // sibling items to the key that holds them.
+    if (slot == YamlSlot::none) {
+        const std::size_t first = line.find_first_not_of(' ');
+        std::size_t above_start = line_start;
+        bool item = first != std::string_view::npos && line[first] == '-';
+        while (item && above_start > 0) {
+            const std::size_t above_end = above_start - 1;  // the line's '\n'
+            const std::size_t before = above_end == 0 ? std::string_view::npos : text.rfind('\n', above_end - 1);
+            above_start = before == std::string_view::npos ? 0 : before + 1;
+            const std::string_view above = text.substr(above_start, above_end - above_start);
+            const std::size_t indent = above.find_first_not_of(' ');
+            if (indent == std::string_view::npos) continue;  // a blank line
+            if (above[indent] == '-') continue;              // a sibling item
+            if (above.find("entries:") != std::string_view::npos) slot = YamlSlot::object;
+            item = false;
         }
     }
     if (slot == YamlSlot::none) return out;

@@ -19,6 +19,12 @@ void add_fact(std::string& out, std::string_view label, std::string_view value) 
     out += '\n';
 }
 
+// "8 bits (1 byte)": process data is sized in bits, SMs and frames in bytes.
+std::string size_text(std::uint64_t bits) {
+    const std::uint64_t bytes = (bits + 7) / 8;
+    return bits_text(std::to_string(bits)) + " (" + std::to_string(bytes) + (bytes == 1 ? " byte)" : " bytes)");
+}
+
 std::string object_hover(const Index& index, const Scope& scope, const Occurrence& occurrence) {
     const ObjectDef* object = scope.find_object(occurrence.key);
     const std::string shown = format_index(occurrence.key, index.yaml);
@@ -80,9 +86,7 @@ std::string pdo_hover(const Index& index, const Scope& scope, std::uint32_t key)
     if (!pdo) return "PDO " + format_index(key, index.yaml) + " is not defined in " + scope_title(scope) + ".\n";
     std::string out = "**" + std::string(pdo->tx ? "TxPdo " : "RxPdo ") + format_index(pdo->index, index.yaml) + " " +
                       pdo->name + "**\n\n";
-    const std::uint64_t bits = pdo->bit_size();
-    add_fact(out, "size", std::to_string(bits) + (bits == 1 ? " bit" : " bits") + " (" + std::to_string((bits + 7) / 8) +
-                              ((bits + 7) / 8 == 1 ? " byte)" : " bytes)"));
+    add_fact(out, "size", size_text(pdo->bit_size()));
     add_fact(out, "entries", std::to_string(pdo->entries.size()));
     if (pdo->sm) {
         std::string sm = "SM" + std::to_string(*pdo->sm);
@@ -102,14 +106,15 @@ std::string_view role_meaning(std::string_view role) {
     return "";
 }
 
-std::string sm_hover(const Scope& scope, std::uint32_t number) {
+std::string sm_hover(const Index& index, const Scope& scope, std::uint32_t number) {
     const SmDef* sm = scope.find_sm(number);
     if (!sm) return "SM" + std::to_string(number) + " is not defined in " + scope_title(scope) + ".\n";
     std::string out = "**SM" + std::to_string(sm->number) + " " + sm->role + "**";
     if (const std::string_view meaning = role_meaning(sm->role); !meaning.empty()) out += " (" + std::string(meaning) + ")";
     out += "\n\n";
     add_fact(out, "start address", sm->start_address);
-    add_fact(out, "default size", sm->default_size.empty() ? std::string() : sm->default_size + " bytes");
+    if (!sm->default_size.empty())
+        add_fact(out, "default size", sm->default_size + (sm->default_size == "1" ? " byte" : " bytes"));
     add_fact(out, "control byte", sm->control_byte);
     add_fact(out, "enable", sm->enable);
     std::uint64_t bits = 0;
@@ -117,11 +122,11 @@ std::string sm_hover(const Scope& scope, std::uint32_t number) {
     for (const auto& pdo : scope.pdos) {
         if (pdo.sm != sm->number) continue;
         bits += pdo.bit_size();
-        mapped += "  - " + std::string(pdo.tx ? "TxPdo " : "RxPdo ") + format_index(pdo.index, false) + " " + pdo.name +
+        mapped += "  - " + std::string(pdo.tx ? "TxPdo " : "RxPdo ") + format_index(pdo.index, index.yaml) + " " + pdo.name +
                   " (" + std::to_string(pdo.bit_size()) + " bits)\n";
     }
     if (!mapped.empty())
-        out += "- mapped by default: " + std::to_string(bits) + " bits (" + std::to_string((bits + 7) / 8) + " bytes)\n" +
+        out += "- mapped by default: " + size_text(bits) + "\n" +
                mapped;
     return out;
 }
@@ -140,7 +145,7 @@ std::optional<Hover> hover(const Index& index, Position position) {
         case Target::object: result.markdown = object_hover(index, scope, *occurrence); break;
         case Target::data_type: result.markdown = data_type_hover(scope, index.token(occurrence->span)); break;
         case Target::pdo: result.markdown = pdo_hover(index, scope, occurrence->key); break;
-        case Target::sync_manager: result.markdown = sm_hover(scope, occurrence->key); break;
+        case Target::sync_manager: result.markdown = sm_hover(index, scope, occurrence->key); break;
     }
     while (result.markdown.ends_with("\n\n")) result.markdown.pop_back();
     return result;

@@ -7,6 +7,7 @@
 #include <pugixml.hpp>
 
 #include <cstring>
+#include <vector>
 
 #include "esi/number.hpp"
 #include "navigate/index.hpp"
@@ -21,13 +22,17 @@ class XmlWalker {
 public:
     XmlWalker(Index& index, const char* buffer) : index_(index), text_(index.text), buffer_(buffer) {}
 
+    // Devices and modules sit at a fixed depth (EtherCATInfo/Descriptions/Devices/Device, also
+    // under an EtherCATInfoList; modules also in a module file's EtherCATModule/Modules); only those
+    // containers are entered.
     void walk(pugi::xml_node node) {
         for (pugi::xml_node child : node.children()) {
             if (child.type() != pugi::node_element) continue;
             const std::string_view name = child.name();
             if (name == "Device" || name == "Module")
                 scope(child, name == "Module");
-            else
+            else if (name == "EtherCATInfoList" || name == "EtherCATInfo" || name == "EtherCATModule" ||
+                     name == "Descriptions" || name == "Devices" || name == "Modules")
                 walk(child);
         }
     }
@@ -40,14 +45,13 @@ private:
     }
 
     // Offset after an element's end tag (or its "/>"); the end of the text when it is truncated.
+    // Iterative: hostile input nests elements deeper than a stack allows, and pugixml parses it.
     std::size_t element_end(pugi::xml_node node) const {
-        const std::string_view name = node.name();
-        std::size_t from = static_cast<std::size_t>(node.name() - buffer_) + name.size();
-        pugi::xml_node last = node.last_child();
-        while (last && last.type() != pugi::node_element && last.previous_sibling()) last = last.previous_sibling();
-        if (last && last.type() == pugi::node_element) {
-            from = element_end(last);
-        } else if (!node.first_child()) {
+        std::vector<pugi::xml_node> chain{node};
+        while (const pugi::xml_node last = last_element_child(chain.back())) chain.push_back(last);
+        const pugi::xml_node leaf = chain.back();
+        std::size_t from = static_cast<std::size_t>(leaf.name() - buffer_) + std::strlen(leaf.name());
+        if (!leaf.first_child()) {
             // No content: either <Name …/> or <Name …></Name>.
             char quote = 0;
             for (std::size_t i = from; i < text_.size(); ++i) {
@@ -57,14 +61,27 @@ private:
                 } else if (c == '"' || c == '\'') {
                     quote = c;
                 } else if (c == '>') {
-                    if (text_[i - 1] == '/') return i + 1;
                     from = i + 1;
+                    if (text_[i - 1] == '/') chain.pop_back();  // closed already
                     break;
                 }
             }
         }
+        // Each end tag follows the end of the element's last child.
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) from = after_end_tag(*it, from);
+        return from;
+    }
+
+    static pugi::xml_node last_element_child(pugi::xml_node node) {
+        for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling())
+            if (child.type() == pugi::node_element) return child;
+        return {};
+    }
+
+    std::size_t after_end_tag(pugi::xml_node node, std::size_t from) const {
+        if (from >= text_.size()) return text_.size();
         std::string closing = "</";
-        closing += name;
+        closing += node.name();
         const std::size_t at = text_.find(closing, from);
         if (at == std::string_view::npos) return text_.size();
         const std::size_t gt = text_.find('>', at);

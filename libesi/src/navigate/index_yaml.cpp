@@ -33,10 +33,11 @@ std::string name_text(Node node) {
     return {};
 }
 
-std::string number_text(const std::optional<std::uint32_t>& value, bool hex) {
+// Decimal, or hex with `hex_digits` digits at least (0: decimal).
+std::string number_text(const std::optional<std::uint32_t>& value, int hex_digits) {
     if (!value) return {};
-    if (!hex) return std::to_string(*value);
-    std::string out = format_hex(*value, 4);
+    if (hex_digits == 0) return std::to_string(*value);
+    std::string out = format_hex(*value, hex_digits);
     return out.replace(0, 2, "0x");
 }
 
@@ -175,10 +176,10 @@ private:
             SmDef def;
             def.number = static_cast<std::uint32_t>(scope.sms.size());
             def.role = sm.type;
-            def.start_address = number_text(sm.start_address, true);
-            def.default_size = number_text(sm.default_size, false);
-            def.control_byte = number_text(sm.control_byte, true);
-            def.enable = number_text(sm.enable, false);
+            def.start_address = number_text(sm.start_address, 4);
+            def.default_size = number_text(sm.default_size, 0);
+            def.control_byte = number_text(sm.control_byte, 2);
+            def.enable = number_text(sm.enable, 0);
             scope.sms.push_back(std::move(def));
         }
         for (const auto* pdos : {&device.rx_pdos, &device.tx_pdos})

@@ -13,6 +13,7 @@ using Names = std::span<const std::string_view>;
 
 constexpr std::string_view info_list[] = {"EtherCATInfo"};
 constexpr std::string_view info[] = {"InfoReference", "Vendor", "Descriptions"};
+constexpr std::string_view module_root[] = {"Vendor", "Modules"};
 constexpr std::string_view vendor[] = {"Id", "Name", "Comment", "URL", "DescriptionURL", "Image16x14", "ImageFile16x14",
                                        "ImageData16x14", "VendorSpecific"};
 constexpr std::string_view descriptions[] = {"Groups", "Devices", "Modules"};
@@ -68,6 +69,7 @@ struct Entry {
 constexpr std::array table = {
     Entry{"EtherCATInfoList", "", info_list},
     Entry{"EtherCATInfo", "", info},
+    Entry{"EtherCATModule", "", module_root},
     Entry{"Vendor", "", vendor},
     Entry{"Descriptions", "", descriptions},
     Entry{"Groups", "", groups},
