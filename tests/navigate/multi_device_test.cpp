@@ -75,6 +75,22 @@ TEST_F(MultiDevice, OpModeSmNumberGoesToTheSm) {
               "- mapped by default: 16 bits (2 bytes)\n  - TxPdo #x1A00 In (16 bits)\n");
 }
 
+TEST(XmlTokens, CdataAndEntitiesKeepTheirTextRanges) {
+    const std::string text = "<EtherCATInfo><Descriptions><Devices><Device><Type><![CDATA[A&B]]></Type>"
+                             "<Profile><Dictionary><Objects><Object><Index> #x2000 </Index><Name>R&amp;D &#x3A9;&#937;</Name>"
+                             "<Type>UINT</Type></Object></Objects></Dictionary></Profile></Device></Devices></Descriptions>"
+                             "</EtherCATInfo>";
+    const auto index = build_index(text, "t.xml");
+    const auto symbols = outline(*index);
+    ASSERT_EQ(symbols.size(), 1u);
+    EXPECT_EQ(symbols[0].name, "A&B");
+    EXPECT_EQ(symbols[0].selection_range, test::range_of(text, "A&B"));
+    ASSERT_EQ(symbols[0].children.size(), 1u);
+    // Blanks around a value are not part of the token; a name is shown with its references replaced.
+    EXPECT_EQ(symbols[0].children[0].selection_range, test::range_of(text, "#x2000"));
+    EXPECT_EQ(symbols[0].children[0].detail, "R&D \u03A9\u03A9");
+}
+
 TEST_F(MultiDevice, OutlineHasBothDevices) {
     const auto symbols = outline(*index);
     ASSERT_EQ(symbols.size(), 2u);
