@@ -49,14 +49,16 @@ TEST_F(XmlNavigation, DefinitionOfPdoEntryIsTheDictionaryObject) {
     EXPECT_EQ(found[0].range, token_range(text, "<Index>#x7000", "#x7000", 0));
 }
 
-TEST_F(XmlNavigation, ReferencesOfAnObjectAreItsPdoEntries) {
+TEST_F(XmlNavigation, ReferencesOfAnObjectAreItsPdoEntriesAndMappings) {
+    // In document order: 0x1600's default mapping entry, the object itself, the RxPdo's entry.
     const auto with = references(*index, at(text, "<Index>#x7000", 0, 7), true);
-    ASSERT_EQ(with.size(), 2u);
-    EXPECT_EQ(with[0].range, token_range(text, "<Index>#x7000", "#x7000", 0));
-    EXPECT_EQ(with[1].range, token_range(text, "<Index>#x7000", "#x7000", 1));
+    ASSERT_EQ(with.size(), 3u);
+    EXPECT_EQ(with[0].range, token_range(text, "#x70000008", "#x70000008"));
+    EXPECT_EQ(with[1].range, token_range(text, "<Index>#x7000", "#x7000", 0));
+    EXPECT_EQ(with[2].range, token_range(text, "<Index>#x7000", "#x7000", 1));
     const auto without = references(*index, at(text, "<Index>#x7000", 0, 7), false);
-    ASSERT_EQ(without.size(), 1u);
-    EXPECT_EQ(without[0].range, token_range(text, "<Index>#x7000", "#x7000", 1));
+    ASSERT_EQ(without.size(), 2u);
+    EXPECT_EQ(without[1].range, token_range(text, "<Index>#x7000", "#x7000", 1));
 }
 
 TEST_F(XmlNavigation, DataTypeNameGoesToItsDefinitionAndShowsItsLayout) {
@@ -128,6 +130,21 @@ TEST_F(XmlNavigation, OutlineListsDeviceSmsPdosDataTypesObjects) {
     EXPECT_EQ(rx.children[0].detail, "Digital outputs");
     EXPECT_EQ(device.children.back().detail, "Digital outputs");
     EXPECT_EQ(device.children.back().selection_range, token_range(text, "<Index>#x7000", "#x7000", 0));
+}
+
+TEST_F(XmlNavigation, DictionaryMappingAndAssignmentDefaultsAreReferences) {
+    // 0x1600's sub-item 1 maps #x7000:00 (8 bits); 0x1C12's sub-item 1 assigns PDO #x1600.
+    const auto object = definition(*index, at(text, "#x70000008", 0, 3));
+    ASSERT_EQ(object.size(), 1u);
+    EXPECT_EQ(object[0].range, token_range(text, "<Index>#x7000", "#x7000", 0));
+    const auto pdo = definition(*index, at(text, "<DefaultValue>#x1600", 0, 16));
+    ASSERT_EQ(pdo.size(), 1u);
+    EXPECT_EQ(pdo[0].range, token_range(text, "<Index>#x1600</Index>\n          <Name>Outputs", "#x1600"));
+    const auto result = hover(*index, at(text, "<DefaultValue>#x1A00", 0, 16));
+    ASSERT_TRUE(result);
+    EXPECT_EQ(result->markdown.substr(0, 24), "**TxPdo #x1A00 Inputs**\n");
+    // The count in sub-index 0 is no reference.
+    EXPECT_FALSE(hover(*index, at(text, "<SubItem><Name>Number of entries</Name><Info><DefaultValue>1", 2, 59)));
 }
 
 TEST_F(XmlNavigation, NothingUnderTheCursorGivesNothing) {

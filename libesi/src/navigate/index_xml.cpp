@@ -308,11 +308,30 @@ private:
         object.pdo_mapping = text_of(node.child("Flags").child("PdoMapping"));
         const pugi::xml_node info = node.child("Info");
         object.default_value = default_of(*this, info);
-        for (pugi::xml_node item : info.children("SubItem"))
+        for (pugi::xml_node item : info.children("SubItem")) {
             object.sub_defaults.emplace_back(name_of(item), default_of(*this, item.child("Info")));
+            mapping_reference(object.index, item.child("Info").child("DefaultValue"));
+        }
         add(object.decl, Target::object, true, object.index);
         data_type_reference(node.child("Type"));
         current().objects.push_back(std::move(object));
+    }
+
+    // The dictionary's own PDO mapping and assignment: a default of a mapping object (0x1600..,
+    // 0x1A00..) is an entry "#x70000108" (index, subindex, bit length), one of an SM assignment
+    // object (0x1C10..0x1C2F) a PDO index. Both are references like a PDO's Entry and Sm/Pdo.
+    void mapping_reference(std::uint32_t object_index, pugi::xml_node value) {
+        if (!value) return;
+        const Span span = text_span(value);
+        const auto number = parse_index_number(index_.token(span));
+        if (!number) return;
+        const bool mapping = (object_index >= 0x1600 && object_index <= 0x17FF) ||
+                             (object_index >= 0x1A00 && object_index <= 0x1BFF);
+        const bool assignment = object_index >= 0x1C10 && object_index <= 0x1C2F;
+        if (mapping && (*number >> 16) != 0)
+            add(span, Target::object, false, *number >> 16, (*number >> 8) & 0xFF);
+        else if (assignment && *number >= 0x1600)  // sub-index 0 holds a count, not a PDO
+            add(span, Target::pdo, false, *number);
     }
 
     void read_sm(pugi::xml_node node) {
