@@ -6,71 +6,18 @@
 
 #include <pugixml.hpp>
 
-#include <cstdlib>
 #include <cstring>
 #include <vector>
 
 #include "esi/number.hpp"
 #include "navigate/index.hpp"
+#include "navigate/xml_unescape.hpp"
 
 namespace esi::navigate {
 
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-
-void append_utf8(std::string& out, std::uint32_t code) {
-    if (code < 0x80) {
-        out += static_cast<char>(code);
-    } else if (code < 0x800) {
-        out += static_cast<char>(0xC0 | (code >> 6));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    } else if (code < 0x10000) {
-        out += static_cast<char>(0xE0 | (code >> 12));
-        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    } else {
-        out += static_cast<char>(0xF0 | (code >> 18));
-        out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
-        out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
-        out += static_cast<char>(0x80 | (code & 0x3F));
-    }
-}
-
-// A value as a hover or the outline shows it: the predefined entities and character references
-// replaced ("R&amp;D" is "R&D"); anything else stays as written.
-std::string unescape(std::string_view raw) {
-    if (raw.find('&') == std::string_view::npos) return std::string(raw);
-    static constexpr std::pair<std::string_view, char> named[] = {
-        {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
-    std::string out;
-    for (std::size_t i = 0; i < raw.size();) {
-        bool replaced = false;
-        if (raw[i] == '&') {
-            for (const auto& [entity, c] : named)
-                if (raw.substr(i, entity.size()) == entity) {
-                    out += c;
-                    i += entity.size();
-                    replaced = true;
-                    break;
-                }
-            const std::size_t semicolon = raw.find(';', i);
-            if (!replaced && raw.substr(i, 2) == "&#" && semicolon != std::string_view::npos && semicolon - i <= 10) {
-                const bool hex = raw.substr(i, 3) == "&#x";
-                const std::string digits(raw.substr(i + (hex ? 3 : 2), semicolon - i - (hex ? 3 : 2)));
-                char* end = nullptr;
-                const unsigned long code = std::strtoul(digits.c_str(), &end, hex ? 16 : 10);
-                if (!digits.empty() && end && *end == '\0' && code > 0 && code <= 0x10FFFF) {
-                    append_utf8(out, static_cast<std::uint32_t>(code));
-                    i = semicolon + 1;
-                    replaced = true;
-                }
-            }
-        }
-        if (!replaced) out += raw[i++];
-    }
-    return out;
-}
 
 class XmlWalker {
 public:
@@ -183,7 +130,7 @@ private:
         const std::string_view raw = index_.token(span);
         // CDATA is literal; text outside it may hold entities.
         if (span.begin >= 9 && index_.text.compare(span.begin - 9, 9, "<![CDATA[") == 0) return std::string(raw);
-        return unescape(raw);
+        return unescape_xml_text(raw);
     }
 
     // The first Name child (any LcId), as written.
