@@ -1,4 +1,4 @@
-# bash completion for the libesi tools: esi-lint, esi-gen, esi-diff, esi-sii, esi-net, esi-doc, esi-sim.
+# bash completion for the libesi tools: esi-lint, esi-gen, esi-diff, esi-sii, esi-net, esi-doc, esi-sim, esi-lsp.
 # Commands, options and option values come from the tool itself (TOOL --help-completion prints
 # the table its --help is rendered from, cli/cli_reference.hpp), so the completion knows exactly
 # the options of the installed tool. Rule ids after esi-lint --explain come from
@@ -71,4 +71,4 @@ _esi_complete() {
     return 0
 }
 
-complete -F _esi_complete esi-lint esi-gen esi-diff esi-sii esi-net esi-doc esi-sim
+complete -F _esi_complete esi-lint esi-gen esi-diff esi-sii esi-net esi-doc esi-sim esi-lsp

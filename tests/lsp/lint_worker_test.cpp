@@ -1,0 +1,69 @@
+// The lint worker on its own: the newest version wins, a closed document publishes nothing, and
+// a burst of changes within the debounce time costs one lint.
+
+#include <gtest/gtest.h>
+
+#include <condition_variable>
+#include <mutex>
+#include <vector>
+
+#include "esi/lsp/lint_worker.hpp"
+#include "support/test_support.hpp"
+
+namespace {
+
+using namespace std::chrono_literals;
+
+struct Published {
+    std::mutex mutex;
+    std::condition_variable changed;
+    std::vector<std::pair<std::string, std::int64_t>> results;  // uri, version
+    bool wait_for(std::size_t n, std::chrono::milliseconds timeout) {
+        std::unique_lock lock(mutex);
+        return changed.wait_for(lock, timeout, [&] { return results.size() >= n; });
+    }
+};
+
+esi::lsp::LintRequest request(const std::string& uri, std::int64_t version) {
+    static const auto text =
+        std::make_shared<const std::string>(esi::test::read_text(esi::test::source_dir() / "samples/esi/example-digital-io.xml"));
+    return {uri, "", version, text};
+}
+
+TEST(LspLintWorker, OnlyTheNewestVersionIsPublished) {
+    Published published;
+    {
+        esi::lsp::LintWorker worker(0ms, [&](esi::lsp::LintResult result) {
+            const std::lock_guard lock(published.mutex);
+            published.results.emplace_back(result.uri, result.version);
+            published.changed.notify_all();
+        });
+        for (std::int64_t version = 1; version <= 20; ++version) worker.submit(request("file:///a.xml", version));
+        ASSERT_TRUE(published.wait_for(1, 20s));
+        std::this_thread::sleep_for(100ms);  // time for a wrongly published older version to show
+    }
+    // Whatever ran meanwhile, the last result published is version 20 and none came after it.
+    ASSERT_FALSE(published.results.empty());
+    EXPECT_EQ(published.results.back(), (std::pair<std::string, std::int64_t>{"file:///a.xml", 20}));
+    for (std::size_t i = 1; i < published.results.size(); ++i) EXPECT_LT(published.results[i - 1].second, published.results[i].second);
+}
+
+TEST(LspLintWorker, ForgottenDocumentPublishesNothingAndBurstsAreDebounced) {
+    Published published;
+    {
+        esi::lsp::LintWorker worker(200ms, [&](esi::lsp::LintResult result) {
+            const std::lock_guard lock(published.mutex);
+            published.results.emplace_back(result.uri, result.version);
+            published.changed.notify_all();
+        });
+        worker.submit(request("file:///closed.xml", 1));
+        worker.forget("file:///closed.xml");
+        for (std::int64_t version = 1; version <= 5; ++version) worker.submit(request("file:///b.xml", version));
+        ASSERT_TRUE(published.wait_for(1, 20s));
+        std::this_thread::sleep_for(300ms);
+    }
+    ASSERT_EQ(published.results.size(), 1u);
+    EXPECT_EQ(published.results[0], (std::pair<std::string, std::int64_t>{"file:///b.xml", 5}));
+}
+
+}  // namespace
