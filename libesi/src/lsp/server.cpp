@@ -30,6 +30,11 @@ const std::map<std::string, Server::RequestEntry, std::less<>>& Server::requests
         {"initialize", {&Server::initialize, {}, {}}},
         {"shutdown", {&Server::shutdown, {}, {}}},
         {"textDocument/codeAction", {&Server::code_action, "codeActionProvider", {{"codeActionKinds", {"quickfix"}}}}},
+        {"textDocument/hover", {&Server::hover, "hoverProvider", true}},
+        {"textDocument/definition", {&Server::definition, "definitionProvider", true}},
+        {"textDocument/references", {&Server::references, "referencesProvider", true}},
+        {"textDocument/completion", {&Server::completion, "completionProvider", {{"triggerCharacters", {"<", "#"}}}}},
+        {"textDocument/documentSymbol", {&Server::document_symbol, "documentSymbolProvider", true}},
     };
     return table;
 }
@@ -250,6 +255,7 @@ void Server::did_close(const Json& params) {
     const std::string uri = string_member(member(params, "textDocument"), "uri");
     documents_.close(uri);
     worker_->forget(uri);
+    navigation_.erase(uri);
     {
         const std::lock_guard lock(results_mutex_);
         results_.erase(uri);

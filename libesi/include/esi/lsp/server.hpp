@@ -19,6 +19,7 @@
 #include "esi/lsp/document_store.hpp"
 #include "esi/lsp/framing.hpp"
 #include "esi/lsp/lint_worker.hpp"
+#include "esi/navigate/navigate.hpp"
 
 namespace esi::lsp {
 
@@ -75,6 +76,12 @@ private:
     Json initialize(const Json& params);
     Json shutdown(const Json& params);
     Json code_action(const Json& params);
+    // The position-based requests (navigate_requests.cpp).
+    Json hover(const Json& params);
+    Json definition(const Json& params);
+    Json references(const Json& params);
+    Json completion(const Json& params);
+    Json document_symbol(const Json& params);
     // Notifications.
     void initialized(const Json& params);
     void exit(const Json& params);
@@ -100,6 +107,16 @@ private:
     std::mutex results_mutex_;
     std::map<std::string, LintResult, std::less<>> results_;  // the latest published lint per document
     std::unique_ptr<LintWorker> worker_;
+
+    // The navigation index of a document's version, built on the first request that needs it.
+    struct NavigationEntry {
+        std::int64_t version = 0;
+        std::shared_ptr<const std::string> text;  // the snapshot indexed
+        navigate::IndexPtr index;
+    };
+    // The index of the open document's current version; null when the document is not open.
+    const navigate::Index* navigation_index(const std::string& uri);
+    std::map<std::string, NavigationEntry, std::less<>> navigation_;  // the main thread's only
 };
 
 // Reads messages until `exit` or the end of input and returns the exit code.
