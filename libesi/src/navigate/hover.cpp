@@ -3,6 +3,7 @@
 #include <string>
 
 #include "esi/data_types.hpp"
+#include "esi/plural.hpp"
 #include "navigate/format.hpp"
 #include "navigate/index.hpp"
 
@@ -123,7 +124,7 @@ std::string sm_hover(const Index& index, const Scope& scope, std::uint32_t numbe
         if (pdo.sm != sm->number) continue;
         bits += pdo.bit_size();
         mapped += "  - " + std::string(pdo.tx ? "TxPdo " : "RxPdo ") + format_index(pdo.index, index.yaml) + " " + pdo.name +
-                  " (" + std::to_string(pdo.bit_size()) + " bits)\n";
+                  " (" + esi::counted(pdo.bit_size(), "bit") + ")\n";
     }
     if (!mapped.empty())
         out += "- mapped by default: " + size_text(bits) + "\n" +

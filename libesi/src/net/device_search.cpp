@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "esi/number.hpp"
+#include "esi/plural.hpp"
 #include "esi/text_distance.hpp"
 
 namespace esi::net {
@@ -124,8 +125,8 @@ DeviceSearch search_devices(const LibraryIndex& index, const std::optional<Devic
                                            describe_query(*query) + " matches no device of a vendor '" + *vendor + "'", "", SourcePos{});
         } else {
             result.diagnostics.emplace(Severity::error, "net-device-unknown",
-                                       fmt::format("no device of a vendor '{}' in the library ({} files, {} devices)", vendor.value_or(""),
-                                                   index.files.size(), index.devices.size()),
+                                       fmt::format("no device of a vendor '{}' in the library ({}, {})", vendor.value_or(""),
+                                                   esi::counted(index.files.size(), "file"), esi::counted(index.devices.size(), "device")),
                                        "", SourcePos{});
         }
     }
