@@ -2,6 +2,9 @@
 -- Opens ESI_NVIM_FILE, starts ESI_LSP on it, waits for the diagnostics and writes them to
 -- ESI_NVIM_OUT/diagnostics.txt ("rule line" per finding), applies the first preferred quick fix,
 -- writes the buffer to ESI_NVIM_OUT/buffer.txt and the diagnostics after the edit to after.txt.
+-- With ESI_NVIM_AT="LINE,CHARACTER" (0-based, LSP units) it first hovers there (hover.txt: the
+-- markdown shown) and jumps to the definition as the editor does (definition.txt: the cursor's
+-- row and column after the jump, 1-based row, 0-based byte column, as nvim_win_get_cursor gives).
 -- Works with the vim.lsp of Neovim 0.7 (Debian 12) and later.
 
 local out_dir = os.getenv('ESI_NVIM_OUT')
@@ -53,6 +56,22 @@ local ok, err = pcall(function()
   dump_diagnostics(bufnr, 'diagnostics.txt')
 
   local client = vim.lsp.get_client_by_id(client_id)
+  local at = os.getenv('ESI_NVIM_AT')
+  if at and at ~= '' then
+    local line, character = at:match('^(%d+),(%d+)$')
+    local position = { line = tonumber(line), character = tonumber(character) }
+    local where = { textDocument = { uri = vim.uri_from_bufnr(bufnr) }, position = position }
+    local hover = client.request_sync('textDocument/hover', where, 10000, bufnr)
+    assert(hover and not hover.err and hover.result, 'no hover')
+    local contents = hover.result.contents
+    write('hover.txt', { type(contents) == 'table' and contents.value or tostring(contents) })
+    vim.api.nvim_win_set_cursor(0, { position.line + 1, position.character })
+    local definition = client.request_sync('textDocument/definition', where, 10000, bufnr)
+    assert(definition and not definition.err and definition.result and definition.result[1], 'no definition')
+    vim.lsp.util.jump_to_location(definition.result[1], 'utf-16')
+    local cursor = vim.api.nvim_win_get_cursor(0)
+    write('definition.txt', { cursor[1] .. ' ' .. cursor[2] })
+  end
   local applied = false
   for _, d in ipairs(vim.diagnostic.get(bufnr)) do
     local params = {

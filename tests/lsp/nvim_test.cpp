@@ -1,6 +1,7 @@
 // Neovim's built-in LSP client, headless (tests/lsp/nvim_client.lua), against esi-lsp: the
-// diagnostics it shows are esi-lint's for the file (rule ids and lines), and a quick fix applied
-// by the editor changes the buffer as esi-lint --fix changes the file. Skips without nvim.
+// diagnostics it shows are esi-lint's for the file (rule ids and lines), a hover shows the object
+// a PDO entry maps, go-to-definition moves the cursor to that object, and a quick fix applied by
+// the editor changes the buffer as esi-lint --fix changes the file. Skips without nvim.
 
 #include <gtest/gtest.h>
 
@@ -34,12 +35,15 @@ struct NvimRun {
     std::set<std::string> diagnostics;
     std::string buffer;
     std::set<std::string> after;
+    std::string hover;       // with `at`: the hover's markdown
+    std::string definition;  // with `at`: "ROW COL" of the cursor after the jump
 };
 
-NvimRun run_nvim(const std::filesystem::path& file, const esi::test::TempDir& out) {
+// `at`: "LINE,CHARACTER" (0-based) to hover and jump from, or empty.
+NvimRun run_nvim(const std::filesystem::path& file, const esi::test::TempDir& out, const std::string& at = "") {
     const std::string script = (esi::test::source_dir() / "tests/lsp/nvim_client.lua").string();
     const esi::test::RunResult result = esi::test::run(
-        {"env", "ESI_NVIM_OUT=" + out.path().string(), "ESI_NVIM_FILE=" + file.string(), "ESI_LSP=" + esi::test::tool("esi-lsp").string(),
+        {"env", "ESI_NVIM_AT=" + at, "ESI_NVIM_OUT=" + out.path().string(), "ESI_NVIM_FILE=" + file.string(), "ESI_LSP=" + esi::test::tool("esi-lsp").string(),
          // Neovim's LSP log and state go to the test's directory, not to a home that may be read-only.
          "XDG_CACHE_HOME=" + out.path().string(), "XDG_STATE_HOME=" + out.path().string(), "XDG_DATA_HOME=" + out.path().string(),
          "timeout", "90", "nvim", "--headless", "--clean", "-n", "-i", "NONE", "-c", "luafile " + script});
@@ -50,6 +54,8 @@ NvimRun run_nvim(const std::filesystem::path& file, const esi::test::TempDir& ou
     if (std::filesystem::exists(out / "diagnostics.txt")) run.diagnostics = lines_of(esi::test::read_text(out / "diagnostics.txt"));
     if (std::filesystem::exists(out / "buffer.txt")) run.buffer = esi::test::read_text(out / "buffer.txt");
     if (std::filesystem::exists(out / "after.txt")) run.after = lines_of(esi::test::read_text(out / "after.txt"));
+    if (std::filesystem::exists(out / "hover.txt")) run.hover = esi::test::read_text(out / "hover.txt");
+    if (std::filesystem::exists(out / "definition.txt")) run.definition = esi::test::read_text(out / "definition.txt");
     return run;
 }
 
@@ -67,9 +73,13 @@ TEST(LspNeovim, DiagnosticsAreEsiLintsAndTheQuickFixApplies) {
     ASSERT_FALSE(expected.empty());
 
     esi::test::TempDir out;
-    const NvimRun run = run_nvim(file, out);
+    // Line 180 (0-based 179) is the RxPdo entry's "            <Index>#x7000</Index>"; the
+    // object #x7000 is defined on line 159, its index at byte column 23.
+    const NvimRun run = run_nvim(file, out, "179,21");
     ASSERT_TRUE(run.error.empty()) << run.error;
     EXPECT_EQ(run.diagnostics, expected);
+    EXPECT_EQ(run.hover, "**#x7000 Digital outputs**\n\n- type: `USINT`\n- size: 8 bits\n- access: rw\n- PDO mapping: R\n- default: `0`\n\n");
+    EXPECT_EQ(run.definition, "159 23\n");
     // The buffer after the quick fix is the file as it was before it was broken.
     EXPECT_EQ(run.buffer, text);
     EXPECT_TRUE(run.after.empty()) << *run.after.begin();

@@ -10,8 +10,6 @@
 namespace esi::sim::test_bench {
 namespace {
 
-constexpr const char* remappable = "tests/sim_device/fixtures/remappable.yaml";
-
 TEST(HostileMaster, UnknownProtocolGetsAMailboxError) {
     Bench b(remappable);
     ASSERT_TRUE(b.ready());

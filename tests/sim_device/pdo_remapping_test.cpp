@@ -9,14 +9,6 @@
 namespace esi::sim::test_bench {
 namespace {
 
-constexpr const char* remappable = "tests/sim_device/fixtures/remappable.yaml";
-
-std::vector<std::uint8_t> le(std::uint64_t v, std::size_t n) {
-    std::vector<std::uint8_t> out(n);
-    for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>(v >> (8 * i));
-    return out;
-}
-
 class PdoRemapping : public ::testing::Test {
 protected:
     void SetUp() override {

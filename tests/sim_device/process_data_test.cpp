@@ -8,18 +8,6 @@
 namespace esi::sim::test_bench {
 namespace {
 
-constexpr const char* remappable = "tests/sim_device/fixtures/remappable.yaml";
-
-void to_op(TestMaster& m) {
-    ASSERT_TRUE(m.to_preop());
-    m.configure_process_sm(2, 4);
-    m.configure_process_sm(3, 4);
-    ASSERT_EQ(m.request_state(4), 4);
-    ASSERT_EQ(m.request_state(8), 8);
-}
-
-std::uint16_t sm_start(TestMaster& m, unsigned n) { return m.sii_sms()->items.at(n).start_address; }
-
 TEST(ProcessData, InputsHoldTheMappedDefaults) {
     Bench b(remappable);
     ASSERT_TRUE(b.ready());
@@ -41,10 +29,7 @@ TEST(ProcessData, OutputsReachTheMappedObjects) {
 TEST(ProcessData, OutputsAreNotTakenInSafeop) {
     Bench b(remappable);
     ASSERT_TRUE(b.ready());
-    ASSERT_TRUE(b.master->to_preop());
-    b.master->configure_process_sm(2, 4);
-    b.master->configure_process_sm(3, 4);
-    ASSERT_EQ(b.master->request_state(4), 4);
+    ASSERT_NO_FATAL_FAILURE(to_safeop(*b.master));
     b.esc.master_write(sm_start(*b.master, 2), std::vector<std::uint8_t>{1, 2, 3, 4});
     b.master->poll();
     EXPECT_EQ(b.master->upload(0x7000, 1).data, (std::vector<std::uint8_t>{0, 0}));

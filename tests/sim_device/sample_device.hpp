@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "esi/load/document.hpp"
 #include "esi/sim/model_slave.hpp"
@@ -44,5 +45,31 @@ struct Bench {
     }
     [[nodiscard]] bool ready() const { return master != nullptr; }
 };
+
+// The fixtures' remappable device with its default mapping: 4 output bytes on SM2, 4 input bytes
+// on SM3.
+constexpr const char* remappable = "tests/sim_device/fixtures/remappable.yaml";
+
+// `n` bytes of `v`, little-endian, as CoE carries values.
+inline std::vector<std::uint8_t> le(std::uint64_t v, std::size_t n) {
+    std::vector<std::uint8_t> out(n);
+    for (std::size_t i = 0; i < n; ++i) out[i] = static_cast<std::uint8_t>(v >> (8 * i));
+    return out;
+}
+
+inline std::uint16_t sm_start(TestMaster& m, unsigned n) { return m.sii_sms()->items.at(n).start_address; }
+
+// PREOP, both process-data SMs set up for the default mapping, SAFEOP.
+inline void to_safeop(TestMaster& m) {
+    ASSERT_TRUE(m.to_preop());
+    m.configure_process_sm(2, 4);
+    m.configure_process_sm(3, 4);
+    ASSERT_EQ(m.request_state(4), 4);
+}
+
+inline void to_op(TestMaster& m) {
+    ASSERT_NO_FATAL_FAILURE(to_safeop(m));
+    ASSERT_EQ(m.request_state(8), 8);
+}
 
 }  // namespace esi::sim::test_bench

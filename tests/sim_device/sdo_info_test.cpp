@@ -8,8 +8,6 @@
 namespace esi::sim::test_bench {
 namespace {
 
-constexpr const char* remappable = "tests/sim_device/fixtures/remappable.yaml";
-
 std::vector<std::uint8_t> info_request(std::uint8_t opcode, std::vector<std::uint8_t> data) {
     std::vector<std::uint8_t> r{0x00, 0x80, opcode, 0, 0, 0};
     r.insert(r.end(), data.begin(), data.end());

@@ -8,18 +8,6 @@
 namespace esi::sim::test_bench {
 namespace {
 
-constexpr const char* remappable = "tests/sim_device/fixtures/remappable.yaml";
-
-std::uint16_t sm_start(TestMaster& m, unsigned n) { return m.sii_sms()->items.at(n).start_address; }
-
-void to_op(TestMaster& m) {
-    ASSERT_TRUE(m.to_preop());
-    m.configure_process_sm(2, 4);
-    m.configure_process_sm(3, 4);
-    ASSERT_EQ(m.request_state(4), 4);
-    ASSERT_EQ(m.request_state(8), 8);
-}
-
 TEST(SmWatchdog, ExpiryInOpGivesSafeOutputsAndSafeopWith0x001B) {
     Bench b(remappable, ModelSlaveOptions{.echo = true});
     ASSERT_TRUE(b.ready());
@@ -51,10 +39,7 @@ TEST(SmWatchdog, ExpiryInOpGivesSafeOutputsAndSafeopWith0x001B) {
 TEST(SmWatchdog, ExpiryOutsideOpChangesNoState) {
     Bench b(remappable);
     ASSERT_TRUE(b.ready());
-    ASSERT_TRUE(b.master->to_preop());
-    b.master->configure_process_sm(2, 4);
-    b.master->configure_process_sm(3, 4);
-    ASSERT_EQ(b.master->request_state(4), 4);
+    ASSERT_NO_FATAL_FAILURE(to_safeop(*b.master));
     b.esc.expire_watchdog();
     b.master->poll(2);
     EXPECT_EQ(b.master->al_status(), 0x04);
