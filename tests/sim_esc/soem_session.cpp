@@ -4,25 +4,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "support/shell_words.hpp"
 #include "support/test_support.hpp"
 
 namespace esi::test {
-
-namespace {
-
-std::string quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-std::string joined(const std::vector<std::string>& args) {
-    std::string out;
-    for (const auto& a : args) out += " " + quote(a);
-    return out;
-}
-
-}  // namespace
 
 std::string soem_unavailable() {
     const std::string master = ESI_SOEM_MASTER;
@@ -43,13 +28,13 @@ std::vector<SoemStepResult> run_soem_session(const std::vector<SoemStep>& steps)
     const std::string sim = tool("esi-sim").string();
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const std::string out = (dir.path() / std::to_string(i)).string();
-        script << quote(sim) << " --iface v1" << joined(steps[i].sim_args) << " 2> " << quote(out + ".err") << " &\n"
+        script << shell_quoted(sim) << " --iface v1" << shell_arguments(steps[i].sim_args) << " 2> " << shell_quoted(out + ".err") << " &\n"
                << "pid=$!\n"
-               << "n=0; while ! grep -q 'slave(s) on' " << quote(out + ".err")
+               << "n=0; while ! grep -q 'slave(s) on' " << shell_quoted(out + ".err")
                << " 2>/dev/null && kill -0 $pid 2>/dev/null && [ $n -lt 400 ]; do sleep 0.025; n=$((n+1)); done\n"
-               << "if kill -0 $pid 2>/dev/null; then timeout 120 " << quote(ESI_SOEM_MASTER) << " v0"
-               << joined(steps[i].master_args) << " > " << quote(out + ".json") << " 2> /dev/null; kill -TERM $pid; fi\n"
-               << "wait $pid; echo $? > " << quote(out + ".rc") << "\n";
+               << "if kill -0 $pid 2>/dev/null; then timeout 120 " << shell_quoted(ESI_SOEM_MASTER) << " v0"
+               << shell_arguments(steps[i].master_args) << " > " << shell_quoted(out + ".json") << " 2> /dev/null; kill -TERM $pid; fi\n"
+               << "wait $pid; echo $? > " << shell_quoted(out + ".rc") << "\n";
     }
     const RunResult r = run({"unshare", "-rn", "sh", "-c", script.str()});
     std::vector<SoemStepResult> results(steps.size());

@@ -7,7 +7,9 @@
 #include <map>
 #include <sstream>
 
+#include "esi/config_crc.hpp"
 #include "esi/load/document.hpp"
+#include "support/shell_words.hpp"
 #include "support/test_support.hpp"
 
 namespace esi::test {
@@ -18,29 +20,6 @@ namespace fs = std::filesystem;
 
 fs::path soes_core() { return shared_dir() / "tools" / "soes" / "soes"; }
 fs::path firmware_dir() { return source_dir() / "tests" / "sim_soes" / "firmware"; }
-
-std::string quote(const std::string& s) {
-    std::string out = "'";
-    for (char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
-}
-
-std::string joined(const std::vector<std::string>& args) {
-    std::string out;
-    for (const auto& a : args) out += " " + quote(a);
-    return out;
-}
-
-// ConfigData's checksum (ETG.2010: CRC-8, polynomial x^8 + x^2 + x + 1, initial value 0xFF, over
-// words 0..6).
-std::uint8_t config_crc(const std::vector<std::uint8_t>& image) {
-    std::uint8_t crc = 0xFF;
-    for (std::size_t i = 0; i < 14; ++i) {
-        crc ^= image[i];
-        for (int b = 0; b < 8; ++b) crc = static_cast<std::uint8_t>(crc & 0x80 ? (crc << 1) ^ 0x07 : crc << 1);
-    }
-    return crc;
-}
 
 // The AddressSanitizer runtime an instrumented firmware needs in the host: none to add when the
 // host is instrumented itself (the sanitizer tree), else the compiler's shared runtime, preloaded.
@@ -111,7 +90,7 @@ SoesFirmware build_soes_firmware(const fs::path& source, const fs::path& dir, bo
         }
         if (image[0] == 0) {
             image[0] = 0x05;
-            image[14] = config_crc(image);
+            image[14] = config_crc(std::span<const std::uint8_t>(image.data(), 14));
             fw.eeprom = fw.generated / "eeprom-spi.bin";
             std::ofstream out(fw.eeprom, std::ios::binary);
             out.write(reinterpret_cast<const char*>(image.data()), static_cast<std::streamsize>(image.size()));
@@ -173,16 +152,16 @@ std::vector<SoesStepResult> run_soes_session(const std::vector<SoesStep>& steps)
         // check is off: it would report the loader's one-time allocations for the dlopen'ed
         // firmware, and what these runs look for is SOES overrunning its buffers.
         std::string env;
-        if (steps[i].sanitize && !host_sanitized) env = "env LD_PRELOAD=" + quote(asan_runtime()) + " ASAN_OPTIONS=detect_leaks=0 ";
+        if (steps[i].sanitize && !host_sanitized) env = "env LD_PRELOAD=" + shell_quoted(asan_runtime()) + " ASAN_OPTIONS=detect_leaks=0 ";
         else if (host_sanitized) env = "env ASAN_OPTIONS=detect_leaks=0 ";
-        script << env << quote(ESI_SOES_HOST) << " --iface v1" << joined(steps[i].host_args) << " > " << quote(out + ".host")
-               << " 2> " << quote(out + ".err") << " &\n"
+        script << env << shell_quoted(ESI_SOES_HOST) << " --iface v1" << shell_arguments(steps[i].host_args) << " > " << shell_quoted(out + ".host")
+               << " 2> " << shell_quoted(out + ".err") << " &\n"
                << "pid=$!\n"
-               << "n=0; while ! grep -q 'slave(s) on' " << quote(out + ".err")
+               << "n=0; while ! grep -q 'slave(s) on' " << shell_quoted(out + ".err")
                << " 2>/dev/null && kill -0 $pid 2>/dev/null && [ $n -lt 400 ]; do sleep 0.025; n=$((n+1)); done\n"
-               << "if kill -0 $pid 2>/dev/null; then timeout 120 " << quote(master) << " v0" << joined(steps[i].master_args)
-               << " > " << quote(out + ".json") << " 2> /dev/null; kill -TERM $pid; fi\n"
-               << "wait $pid; echo $? > " << quote(out + ".rc") << "\n";
+               << "if kill -0 $pid 2>/dev/null; then timeout 120 " << shell_quoted(master) << " v0" << shell_arguments(steps[i].master_args)
+               << " > " << shell_quoted(out + ".json") << " 2> /dev/null; kill -TERM $pid; fi\n"
+               << "wait $pid; echo $? > " << shell_quoted(out + ".rc") << "\n";
     }
     run({"unshare", "-rn", "sh", "-c", script.str()});
     std::vector<SoesStepResult> results(steps.size());

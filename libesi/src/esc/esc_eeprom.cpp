@@ -4,24 +4,11 @@
 
 #include <algorithm>
 
+#include "esi/config_crc.hpp"
 #include "esi/esc/esc.hpp"
 #include "esi/esc/registers.hpp"
 
 namespace esi::esc {
-
-namespace {
-
-// ETG.2010: CRC-8 over words 0..6 (14 bytes), polynomial x^8 + x^2 + x + 1, initial value 0xFF.
-[[nodiscard]] std::uint8_t configuration_crc(const std::uint8_t* bytes) {
-    std::uint8_t crc = 0xFF;
-    for (int i = 0; i < 14; ++i) {
-        crc ^= bytes[i];
-        for (int bit = 0; bit < 8; ++bit) crc = static_cast<std::uint8_t>((crc & 0x80) ? (crc << 1) ^ 0x07 : crc << 1);
-    }
-    return crc;
-}
-
-}  // namespace
 
 void Esc::load_eeprom() {
     // Bytes past the image read as an erased EEPROM (0xFF): a truncated image fails the
@@ -29,7 +16,7 @@ void Esc::load_eeprom() {
     std::uint8_t area[16];
     for (std::size_t i = 0; i < sizeof area; ++i) area[i] = i < eeprom_.size() ? eeprom_[i] : 0xFF;
     std::uint16_t control = reg::eeprom_read_8_bytes | reg::eeprom_two_address_bytes;
-    eeprom_loaded_ = configuration_crc(area) == area[14];
+    eeprom_loaded_ = config_crc(std::span<const std::uint8_t>(area, 14)) == area[14];
     if (eeprom_loaded_) {
         memory_[reg::pdi_control] = area[0];
         memory_[reg::esc_configuration] = area[1];

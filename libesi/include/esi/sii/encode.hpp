@@ -6,13 +6,13 @@
 #include <span>
 #include <vector>
 
+#include "esi/config_crc.hpp"
 #include "esi/sii/image.hpp"
 
 namespace esi::sii {
 
-// CRC-8 of the configuration area: polynomial x^8+x^2+x+1 (0x07), initial value 0xFF, no
-// reflection, no final XOR, over bytes 0-13 (ESC data sheet Section I; ETG.1000.6).
-[[nodiscard]] std::uint8_t config_crc(std::span<const std::uint8_t> config_area);
+// The configuration area's CRC-8 (esi/config_crc.hpp), under the name the encoder's users know.
+using esi::config_crc;
 
 // Category payloads (without the 4-byte category header). Every payload is padded to a whole
 // number of words. The caller guarantees the limits (<=255 strings of <=255 bytes, <=255 PDO
