@@ -143,7 +143,7 @@ std::optional<EniFacts> read_eni_facts(std::string_view xml, const std::string& 
         }
 
         for (pugi::xml_node cmd : slave.child("Mailbox").child("CoE").child("InitCmds").children("InitCmd")) {
-            EniCoeFact c;
+            CoeCommand c;
             for (pugi::xml_node t : cmd.children("Transition")) c.transitions.push_back(t.child_value());
             c.comment = cmd.child_value("Comment");
             c.index = static_cast<std::uint16_t>(number(cmd.child_value("Index")).value_or(0));

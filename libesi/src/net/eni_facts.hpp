@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "esi/diagnostic.hpp"
+#include "esi/net/network.hpp"
 
 namespace esi::net {
 
@@ -24,21 +25,12 @@ struct EniPdoFact {
     std::vector<EniEntryFact> entries;
 };
 
-struct EniCoeFact {
-    std::vector<std::string> transitions;
-    std::string comment;
-    std::uint16_t index = 0;
-    std::uint8_t subindex = 0;
-    std::vector<std::uint8_t> data;
-    bool complete_access = false;
-};
-
 struct EniSlaveFacts {
     std::string name;
     std::uint32_t vendor_id = 0, product_code = 0, revision = 0;
     std::optional<std::uint16_t> alias;
     std::vector<EniPdoFact> assigned;  // SM by SM, in assignment order
-    std::vector<EniCoeFact> coe;
+    std::vector<CoeCommand> coe;  // as the ENI sends them (origin: network)
     std::uint16_t assign_activate = 0;  // 0: no DC
     std::uint32_t line = 0;             // of the Slave element, for diagnostics
     std::optional<std::uint32_t> phys_addr;  // Info/PhysAddr

@@ -28,7 +28,8 @@ struct ImportedSlave {
     std::vector<std::string> notes;  // comments written above the slave
 };
 
-bool same_coe(const EniCoeFact& e, const CoeCommand& c) {
+// The same command on the bus: what it writes, where and when (not its comment or origin).
+bool same_coe(const CoeCommand& e, const CoeCommand& c) {
     return e.transitions == c.transitions && e.index == c.index && e.subindex == c.subindex && e.data == c.data &&
            e.complete_access == c.complete_access;
 }
@@ -256,7 +257,7 @@ EniImport network_from_eni(std::string_view xml, const std::string& path, const 
         // Each command the ESI implies accounts for one ENI command (the same one may be sent twice,
         // once from the ESI and once from the network); the same comment first.
         std::vector<bool> used(built.coe_init_cmds.size(), false);
-        auto take = [&](const EniCoeFact& e, bool with_comment) {
+        auto take = [&](const CoeCommand& e, bool with_comment) {
             for (std::size_t i = 0; i < built.coe_init_cmds.size(); ++i)
                 if (!used[i] && same_coe(e, built.coe_init_cmds[i]) && (!with_comment || built.coe_init_cmds[i].comment == e.comment)) {
                     used[i] = true;
@@ -264,12 +265,12 @@ EniImport network_from_eni(std::string_view xml, const std::string& path, const 
                 }
             return false;
         };
-        std::vector<const EniCoeFact*> extra;
-        for (const EniCoeFact& e : s.eni->coe)
+        std::vector<const CoeCommand*> extra;
+        for (const CoeCommand& e : s.eni->coe)
             if (!take(e, true)) extra.push_back(&e);
-        std::erase_if(extra, [&](const EniCoeFact* e) { return take(*e, false); });
-        for (const EniCoeFact* ep : extra) {
-            const EniCoeFact& e = *ep;
+        std::erase_if(extra, [&](const CoeCommand* e) { return take(*e, false); });
+        for (const CoeCommand* ep : extra) {
+            const CoeCommand& e = *ep;
             SdoSpec sdo;
             sdo.index = e.index;
             sdo.subindex = e.subindex;
