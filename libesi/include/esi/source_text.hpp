@@ -35,6 +35,10 @@ public:
     // The text of a 1-based line without its line terminator; empty when out of range.
     [[nodiscard]] std::string_view line(std::uint32_t line_number) const;
     [[nodiscard]] std::size_t line_count() const { return line_starts().size(); }
+    // Installs the index of line starts (0, then the offset after every '\n') that a pass over the
+    // text already found, instead of a pass of its own on first use; nothing when the index is
+    // built already.
+    void adopt_line_starts(std::vector<std::uint32_t> starts) const;
 
 private:
     friend class PositionCursor;

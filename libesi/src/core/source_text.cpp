@@ -92,6 +92,10 @@ const std::vector<SourceText::LineStart>& SourceText::line_starts() const {
     return line_starts_;
 }
 
+void SourceText::adopt_line_starts(std::vector<std::uint32_t> starts) const {
+    std::call_once(index_once_, [&] { line_starts_ = std::move(starts); });
+}
+
 std::uint32_t SourceText::line_of(std::size_t offset) const {
     offset = std::min(offset, text_.size());
     const auto& starts = line_starts();

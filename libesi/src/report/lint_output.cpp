@@ -9,6 +9,7 @@
 
 #include "esi/check/registry.hpp"
 #include "esi/check/severity_model.hpp"
+#include "report/json_writer.hpp"
 
 namespace esi {
 
@@ -140,41 +141,73 @@ std::string render_text(const LintReport& report, const TextOutputOptions& optio
     return out;
 }
 
+// Written straight into the output (report/json_writer.hpp), in the layout nlohmann's dump(2) gave
+// it before; a corpus-wide run reports thousands of findings.
 std::string render_json(const LintReport& report) {
-    ordered_json diagnostics = ordered_json::array();
+    report::JsonWriter json;
+    json.begin_object();
+    json.key("diagnostics");
+    json.begin_array();
     for_each_diagnostic(report, [&](const Diagnostic& d, const std::map<std::uint32_t, std::string>&) {
-        ordered_json item{{"path", d.path},
-                          {"line", d.pos.line},
-                          {"column", d.pos.column},
-                          {"severity", to_string(d.severity)},
-                          {"rule", d.rule},
-                          {"message", d.message}};
+        json.begin_object();
+        json.member("path", d.path);
+        json.member("line", std::uint64_t{d.pos.line});
+        json.member("column", std::uint64_t{d.pos.column});
+        json.member("severity", to_string(d.severity));
+        json.member("rule", d.rule);
+        json.member("message", d.message);
         if (!d.notes.empty()) {
-            ordered_json notes = ordered_json::array();
-            for (const auto& n : d.notes)
-                notes.push_back({{"path", n.path}, {"line", n.pos.line}, {"column", n.pos.column}, {"message", n.message}});
-            item["notes"] = std::move(notes);
+            json.key("notes");
+            json.begin_array();
+            for (const auto& n : d.notes) {
+                json.begin_object();
+                json.member("path", n.path);
+                json.member("line", std::uint64_t{n.pos.line});
+                json.member("column", std::uint64_t{n.pos.column});
+                json.member("message", n.message);
+                json.end_object();
+            }
+            json.end_array();
         }
         if (d.fix) {
             // Offsets into the file's decoded UTF-8 text, for an editor to apply (esi-lint --fix maps them to the bytes).
-            ordered_json edits = ordered_json::array();
-            for (const auto& e : d.fix->edits)
-                edits.push_back({{"offset", e.offset}, {"length", e.length}, {"replacement", e.replacement}});
-            item["fix"] = {{"description", d.fix->description}, {"edits", std::move(edits)}};
+            json.key("fix");
+            json.begin_object();
+            json.member("description", d.fix->description);
+            json.key("edits");
+            json.begin_array();
+            for (const auto& e : d.fix->edits) {
+                json.begin_object();
+                json.member("offset", std::uint64_t{e.offset});
+                json.member("length", std::uint64_t{e.length});
+                json.member("replacement", e.replacement);
+                json.end_object();
+            }
+            json.end_array();
+            json.end_object();
         }
-        diagnostics.push_back(std::move(item));
+        json.end_object();
     });
-    ordered_json skipped = ordered_json::array();
-    for (const auto& file : report.files)
-        if (!file.skipped.empty()) skipped.push_back({{"path", file.path}, {"reason", file.skipped}});
-    ordered_json root{{"diagnostics", std::move(diagnostics)},
-                      {"skipped", std::move(skipped)},
-                      {"summary",
-                       {{"files", report.files.size() - skipped_files(report)},
-                        {"errors", report.count(Severity::error)},
-                        {"warnings", report.count(Severity::warning)},
-                        {"infos", report.count(Severity::info)}}}};
-    return root.dump(2, ' ', false, nlohmann::detail::error_handler_t::replace) + "\n";
+    json.end_array();
+    json.key("skipped");
+    json.begin_array();
+    for (const auto& file : report.files) {
+        if (file.skipped.empty()) continue;
+        json.begin_object();
+        json.member("path", file.path);
+        json.member("reason", file.skipped);
+        json.end_object();
+    }
+    json.end_array();
+    json.key("summary");
+    json.begin_object();
+    json.member("files", std::uint64_t{report.files.size() - skipped_files(report)});
+    json.member("errors", std::uint64_t{report.count(Severity::error)});
+    json.member("warnings", std::uint64_t{report.count(Severity::warning)});
+    json.member("infos", std::uint64_t{report.count(Severity::info)});
+    json.end_object();
+    json.end_object();
+    return json.take() + "\n";
 }
 
 std::string render_github(const LintReport& report) {

@@ -5,20 +5,39 @@
 // names as written, so nothing here changes the model; namespace-aware parsers (the .NET reader of
 // configuration tools, libxml2 behind xmllint --schema) refuse or misread such a document.
 
-#include <pugixml.hpp>
+#include <set>
+#include <string>
+#include <string_view>
 
 #include "esi/diagnostic.hpp"
 #include "esi/source_text.hpp"
+#include "xml/tree_parser.hpp"
 
 namespace esi {
 
 // The namespace the xsi: prefix stands for by convention; the safe fix declares it on the root.
 inline constexpr std::string_view xml_schema_instance_namespace = "http://www.w3.org/2001/XMLSchema-instance";
 
+// Whether every prefixed name the text may hold uses a prefix that the root element declares,
+// which then holds everywhere: no element needs checking (most vendor files).
+[[nodiscard]] bool only_prefixes_of_the_root(std::string_view text, xml_tree::Element root);
+
 // One xml-undeclared-prefix error per prefix that an element or attribute name uses while no
-// element around it declares it, at its first use. The one for xsi: carries the fix declaring it
-// on the root element. `parse_buffer` is the in-place copy of `source` that `parsed` was read from.
-void report_undeclared_prefixes(const SourceText& source, const pugi::xml_document& parsed, const char* parse_buffer,
-                                Diagnostics& diagnostics);
+// element around it declares it, at its first use; run on every start tag while the parser's pass
+// is at it. The one for xsi: carries the fix declaring it on the root element.
+class UndeclaredPrefixCheck final : public xml_tree::StartTagObserver {
+public:
+    UndeclaredPrefixCheck(const SourceText& source, xml_tree::TreeParser& parser, xml_tree::Element root, Diagnostics& diagnostics);
+    void start_tag(xml_tree::Element element) override;
+
+private:
+    void check(xml_tree::Element element, std::string_view name, SourcePos pos);
+
+    const SourceText& source_;
+    xml_tree::TreeParser& parser_;
+    std::size_t root_name_end_;  // offset right after the root element's name
+    Diagnostics& diagnostics_;
+    std::set<std::string, std::less<>> reported_;
+};
 
 }  // namespace esi

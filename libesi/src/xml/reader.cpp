@@ -1,7 +1,8 @@
-// ESI XML -> model. One pass over a pugixml DOM built from the UTF-8 text; every typed field is
-// read by name, everything else is kept verbatim in Extras with its position. This file holds
-// the document: decoding, parsing, the roots, EtherCATInfo, vendor and groups, and the verbatim
-// store; reader_context.hpp lists the files that read the other elements.
+// ESI XML -> model. One pass over the UTF-8 text (xml/tree_parser.hpp) checks it and builds an
+// element tree a subtree at a time; every typed field is read by name, everything else is kept
+// verbatim in Extras with its position. This file holds the document: decoding, parsing, the
+// roots, EtherCATInfo, vendor and groups, and the verbatim store; reader_context.hpp lists the
+// files that read the other elements.
 
 #include "esi/xml/reader.hpp"
 
@@ -11,30 +12,26 @@
 #include <cstdint>
 #include <cstdio>
 #include <new>
-#include <pugixml.hpp>
 #include <system_error>
 
 #include "esi/encoding.hpp"
-#include "xml/reader_context.hpp"
 #include "esi/xml/foreign_root.hpp"
-#include "esi/xml/well_formed.hpp"
-#include "esi/xml/xinclude.hpp"
 #include "xml/namespace_prefixes.hpp"
+#include "xml/reader_context.hpp"
+#include "xml/tree_parser.hpp"
+#include "xml/xinclude_check.hpp"
 
 namespace esi {
 
 namespace xml_reader {
 
-void Reader::verbatim(XmlElement& e, const pugi::xml_node n, std::string_view after, std::size_t depth) {
+void Reader::verbatim(XmlElement& e, const Element n, std::string_view after, std::size_t depth) {
     e.name = n.name();
     e.after = after;
     e.pos = pos_of(n);
-    if (pugi::xml_attribute first = n.first_attribute()) {
-        // Counted first: grown one by one, the vector moved its strings at every doubling.
-        std::size_t count = 0;
-        for (pugi::xml_attribute a = first; a; a = a.next_attribute()) ++count;
-        e.attributes.reserve(count);
-        for (pugi::xml_attribute a = first; a; a = a.next_attribute()) e.attributes.push_back({a.name(), a.value()});
+    if (const auto attributes = n.attributes(); !attributes.empty()) {
+        e.attributes.reserve(attributes.size());
+        for (const Attr& a : attributes) e.attributes.push_back({std::string(a.name), std::string(a.value)});
     }
     if (depth >= options_.max_verbatim_depth) {
         if (!depth_reported_) {
@@ -46,29 +43,27 @@ void Reader::verbatim(XmlElement& e, const pugi::xml_node n, std::string_view af
         return;
     }
     std::size_t elements = 0;  // reserved up front: an XmlElement is 152 bytes to move on growth
-    for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) elements += c.name()[0] != '\0';
+    for (Element c = n.first_child(); c; c = c.next_sibling()) elements += c.kind() == xml_tree::NodeKind::element;
     e.children.reserve(elements);
     std::string_view previous;
-    for (pugi::xml_node c = n.first_child(); c; c = c.next_sibling()) {
-        const pugi::xml_node_type type = c.type();
-        if (type == pugi::node_pcdata || type == pugi::node_cdata) {
+    for (Element c = n.first_child(); c; c = c.next_sibling()) {
+        if (c.kind() != xml_tree::NodeKind::element) {
             e.text += c.value();
-        } else if (type == pugi::node_element) {
+        } else {
             const std::string_view name = c.name();
             verbatim(e.children.emplace_back(), c, previous, depth + 1);
             previous = name;
         }
     }
-    // parse_embed_pcdata stores the text that comes before any child element in the
-    // element's own value, not as a child: it is the start of the text (mixed content).
-    // Most kept elements hold only that text: it is assigned, not inserted before nothing.
-    if (const char* embedded = n.value(); embedded[0] != '\0') {
-        if (e.text.empty()) e.text.assign(embedded);
-        else e.text.insert(0, embedded);
+    // An element's own text is the text before its first child (mixed content): the start of the
+    // text. Most kept elements hold only that text: it is assigned, not inserted before nothing.
+    if (n.node().has_value) {
+        if (e.text.empty()) e.text.assign(n.value());
+        else e.text.insert(0, n.value());
     }
 }
 
-bool Reader::read_image(Images& images, const pugi::xml_node c, std::string_view name) {
+bool Reader::read_image(Images& images, const Element c, std::string_view name) {
     if (is(name, "ImageData16x14")) images.image_data16x14 = hex(c);
     else if (is(name, "Image16x14")) {
         images.image16x14 = text_of(c);
@@ -78,7 +73,7 @@ bool Reader::read_image(Images& images, const pugi::xml_node c, std::string_view
     return true;
 }
 
-EsiDocument Reader::read_document(const pugi::xml_node root) {
+EsiDocument Reader::read_document(const Element root) {
     EsiDocument doc;
     doc.root_pos = pos_of(root);
     const std::string_view name = root.name();
@@ -90,26 +85,29 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
         read_info(doc.infos.emplace_back(), root);
     } else if (is(name, "EtherCATInfoList")) {
         doc.kind = DocumentKind::ethercat_info_list;
-        for (pugi::xml_attribute a = root.first_attribute(); a; a = a.next_attribute()) keep(doc.root_extras, a);
-        for_children(root, [&](const pugi::xml_node c, std::string_view n, std::string_view previous) {
+        for (const Attr& a : root.attributes()) keep(doc.root_extras, a);
+        stream_children(root, [&](const Element c, std::string_view n, std::string_view previous) {
             if (is(n, "EtherCATInfo")) read_info(doc.infos.emplace_back(), c);
-            else keep(doc.root_extras, c, previous);
+            else if (expanded(c)) keep(doc.root_extras, c, previous);
         });
     } else if (is(name, "EtherCATDict")) {
         doc.kind = DocumentKind::ethercat_dict;
-        for (pugi::xml_attribute a = root.first_attribute(); a; a = a.next_attribute()) {
-            if (is(a.name(), "Version")) doc.dict_version = a.value();
+        for (const Attr& a : root.attributes()) {
+            if (is(a.name, "Version")) doc.dict_version = a.value;
             else keep(doc.root_extras, a);
         }
-        for_children(root, [&](const pugi::xml_node c, std::string_view n, std::string_view previous) {
+        stream_children(root, [&](const Element c, std::string_view n, std::string_view previous) {
+            if (!expanded(c)) return;
             if (is(n, "Dictionary") && !doc.dictionary) read_dictionary(doc.dictionary.emplace(), c);
             else keep(doc.root_extras, c, previous);
         });
     } else if (is(name, "EtherCATDiag")) {
         // Diagnosis messages (EtherCATDiag.xsd): an ETG root that describes no device.
         doc.kind = DocumentKind::ethercat_diag;
-        for (pugi::xml_attribute a = root.first_attribute(); a; a = a.next_attribute()) keep(doc.root_extras, a);
-        for_children(root, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(doc.root_extras, c, previous); });
+        for (const Attr& a : root.attributes()) keep(doc.root_extras, a);
+        stream_children(root, [&](const Element c, std::string_view, std::string_view previous) {
+            if (expanded(c)) keep(doc.root_extras, c, previous);
+        });
     } else {
         doc.kind = DocumentKind::unknown;
         const std::string_view local = name.substr(name.find(':') == std::string_view::npos ? 0 : name.find(':') + 1);
@@ -127,64 +125,62 @@ EsiDocument Reader::read_document(const pugi::xml_node root) {
     return doc;
 }
 
-void Reader::read_info(EtherCATInfo& info, const pugi::xml_node n) {
+// EtherCATInfo (or an EtherCATModule root), streamed: a catalogue's devices and modules are read
+// one at a time.
+void Reader::read_info(EtherCATInfo& info, const Element n) {
     info.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        if (is(a.name(), "Version")) info.version = a.value();
+    for (const Attr& a : n.attributes()) {
+        if (is(a.name, "Version")) info.version = a.value;
         else keep(info.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    stream_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Vendor")) {
-            read_vendor(info.vendor.emplace(), c);
+            if (expanded(c)) read_vendor(info.vendor.emplace(), c);
         } else if (is(name, "Descriptions")) {
             info.has_descriptions = true;
             info.descriptions_pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) keep(info.descriptions_extras, a);
-            for_children(c, [&](const pugi::xml_node d, std::string_view dn, std::string_view dprev) {
+            for (const Attr& a : c.attributes()) keep(info.descriptions_extras, a);
+            stream_children(c, [&](const Element d, std::string_view dn, std::string_view dprev) {
                 if (is(dn, "Groups")) {
-                    for_children(d, [&](const pugi::xml_node g, std::string_view gn, std::string_view) {
+                    if (!expanded(d)) return;
+                    for_children(d, [&](const Element g, std::string_view gn, std::string_view) {
                         if (is(gn, "Group")) read_group(info.groups.emplace_back(), g);
                     });
                 } else if (is(dn, "Devices")) {
-                    reserve_for(info.devices, d, "Device");
-                    for_children(d, [&](const pugi::xml_node dev, std::string_view devn, std::string_view) {
-                        if (!is(devn, "Device")) return;
-                        read_device(info.devices.emplace_back(), dev);
-                        release(d, dev);
+                    stream_children(d, [&](const Element dev, std::string_view devn, std::string_view) {
+                        if (is(devn, "Device") && expanded(dev)) read_device(info.devices.emplace_back(), dev);
                     });
                 } else if (is(dn, "Modules")) {
                     info.has_modules = true;
-                    for_children(d, [&](const pugi::xml_node m, std::string_view mn, std::string_view) {
-                        if (!is(mn, "Module")) return;
-                        read_module(info.modules.emplace_back(), m);
-                        release(d, m);
-                    });
-                } else {
+                    read_modules(info, d);
+                } else if (expanded(d)) {
                     keep(info.descriptions_extras, d, dprev);
                 }
             });
         } else if (is(name, "Modules")) {  // EtherCATModule root
             info.has_modules = true;
-            for_children(c, [&](const pugi::xml_node m, std::string_view mn, std::string_view) {
-                if (!is(mn, "Module")) return;
-                read_module(info.modules.emplace_back(), m);
-                release(c, m);
-            });
-        } else {
+            read_modules(info, c);
+        } else if (expanded(c)) {
             keep(info.extras, c, previous);
         }
     });
 }
 
-void Reader::read_vendor(Vendor& v, const pugi::xml_node n) {
+void Reader::read_modules(EtherCATInfo& info, const Element n) {
+    stream_children(n, [&](const Element m, std::string_view mn, std::string_view) {
+        if (is(mn, "Module") && expanded(m)) read_module(info.modules.emplace_back(), m);
+    });
+}
+
+void Reader::read_vendor(Vendor& v, const Element n) {
     v.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
-        if (is(an, "UniqueName")) v.unique_name = a.value();
-        else if (is(an, "FileVersion")) v.file_version = a.value();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
+        if (is(an, "UniqueName")) v.unique_name = a.value;
+        else if (is(an, "FileVersion")) v.file_version = a.value;
         else keep(v.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Id")) {
             v.id = u32(c);
             v.id_pos = pos_of(c);
@@ -196,15 +192,15 @@ void Reader::read_vendor(Vendor& v, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_group(Group& g, const pugi::xml_node n) {
+void Reader::read_group(Group& g, const Element n) {
     g.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "SortOrder")) g.sort_order = i32(a, n);
-        else if (is(an, "ParentGroup")) g.parent_group = a.value();
+        else if (is(an, "ParentGroup")) g.parent_group = a.value;
         else keep(g.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Type")) {
             g.type = text_of(c);
             g.type_pos = pos_of(c);
@@ -220,34 +216,16 @@ namespace {
 
 using xml_reader::Reader;
 
-std::string describe_parse_error(const pugi::xml_parse_result& result) {
-    switch (result.status) {
-        case pugi::status_unrecognized_tag: return "not well-formed: unrecognized or malformed tag";
-        case pugi::status_bad_start_element: return "not well-formed: malformed start tag";
-        case pugi::status_bad_end_element: return "not well-formed: malformed end tag";
-        case pugi::status_end_element_mismatch: return "not well-formed: start and end tags do not match";
-        case pugi::status_bad_attribute: return "not well-formed: malformed attribute";
-        case pugi::status_bad_pcdata: return "not well-formed: malformed character data";
-        case pugi::status_bad_cdata: return "not well-formed: malformed CDATA section";
-        case pugi::status_bad_comment: return "not well-formed: malformed comment";
-        case pugi::status_bad_pi: return "not well-formed: malformed processing instruction or XML declaration";
-        case pugi::status_bad_doctype: return "not well-formed: malformed DOCTYPE";
-        case pugi::status_no_document_element: return "not well-formed: no root element";
-        default: return std::string("not well-formed: ") + result.description();
+// The start-tag checks that a document needs, run from the parser's pass.
+struct StartTagChecks final : xml_tree::StartTagObserver {
+    StartTagChecks(XIncludeCheck* xinclude, UndeclaredPrefixCheck* prefixes) : xinclude(xinclude), prefixes(prefixes) {}
+    void start_tag(xml_tree::Element element) override {
+        if (xinclude) xinclude->start_tag(element);
+        if (prefixes) prefixes->start_tag(element);
     }
-}
-
-SourcePos error_position(const SourceText& source, const pugi::xml_parse_result& result) {
-    auto offset = static_cast<std::size_t>(result.offset < 0 ? 0 : result.offset);
-    offset = std::min(offset, source.text().size());
-    // A malformed tag is reported where the parser gave up, which may be past the blanks after
-    // it (`</Name ⏎ <`); point at the '<' that opened the broken tag instead, as users look there.
-    if (result.status == pugi::status_bad_end_element || result.status == pugi::status_bad_start_element) {
-        const auto open = source.text().rfind('<', offset > 0 ? offset - 1 : 0);
-        if (open != std::string::npos) offset = open;
-    }
-    return source.position_of(offset);
-}
+    XIncludeCheck* xinclude;
+    UndeclaredPrefixCheck* prefixes;
+};
 
 }  // namespace
 
@@ -259,9 +237,9 @@ namespace {
 ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOptions& options);
 }  // namespace
 
-// Reading holds the text twice and pugixml's tree (64 bytes an element), up to ten times the
-// file for dense markup: a file near the input limit can exhaust a machine's memory. That is an
-// unreadable input (io-error), never an abort.
+// Reading holds the text, the tree of the largest element read at once and the model: for dense
+// markup several times the file, so a file near the input limit can exhaust a machine's memory.
+// That is an unreadable input (io-error), never an abort.
 ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOptions& options) {
     const std::size_t size = bytes_in.size();
     try {
@@ -294,59 +272,60 @@ ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOpti
                                    path, pos);
     }
 
-    // NUL bytes end pugixml's strings early and are never valid XML characters.
+    // NUL bytes are never valid XML characters (and end a C string early).
     if (const auto nul = source->text().find('\0'); nul != std::string::npos) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: NUL character in the document", path,
                                    source->position_of(nul));
         return result;
     }
 
-    // pugixml parses a copy in place (as load_buffer would copy it itself): the SourceText stays
-    // as written, for quoting lines and finding suppressions. In a big document the reader gives
-    // the copy's pages back as it goes (ReadOptions::release_elements_from_bytes).
-    const bool releasing = source->text().size() >= options.release_elements_from_bytes;
-    xml_reader::ParseBuffer buffer(source->text(), releasing);
-    pugi::xml_document xml;
-    // No comments or processing instructions in the tree (for_children relies on it); text before
-    // an element's first child is stored in the element itself. A DOCTYPE is kept as a node (pugixml
-    // accepts one only before the root element, never inside it) so that it can be reported below.
-    // parse_fragment keeps text after the root element as a node, for the well-formedness check.
-    const unsigned parse_options = pugi::parse_default | pugi::parse_embed_pcdata | pugi::parse_doctype | pugi::parse_fragment;
-    const pugi::xml_parse_result parsed = xml.load_buffer_inplace(buffer.data(), buffer.size(), parse_options, pugi::encoding_utf8);
-    if (!parsed) {
-        result.diagnostics.emplace(Severity::error, "xml-syntax", describe_parse_error(parsed), path,
-                                   error_position(*source, parsed));
-        return result;
+    // One pass over the text checks it and builds the element tree, a subtree at a time, while
+    // the reader takes each into the model. What the reading finds is kept apart until the pass
+    // has reached the end: a document that turns out not to be well-formed gets the xml-syntax
+    // error alone, as if nothing had been read.
+    xml_tree::Tree tree;
+    xml_tree::TreeParser parser(source->text(), decoded.encoding, tree);
+    Diagnostics xinclude;
+    Diagnostics prefixes;
+    Diagnostics read;
+    EsiDocument doc;
+    if (const xml_tree::Element root = parser.root()) {
+        // XInclude elements and undeclared namespace prefixes are looked for at every start tag
+        // only where the text may hold them (most files have neither).
+        std::optional<XIncludeCheck> xinclude_check;
+        std::optional<UndeclaredPrefixCheck> prefix_check;
+        if (may_hold_xinclude(source->text())) xinclude_check.emplace(*source, xinclude);
+        if (!only_prefixes_of_the_root(source->text(), root)) prefix_check.emplace(*source, parser, root, prefixes);
+        StartTagChecks checks{xinclude_check ? &*xinclude_check : nullptr, prefix_check ? &*prefix_check : nullptr};
+        if (xinclude_check || prefix_check) {
+            checks.start_tag(root);
+            parser.observe(&checks);
+        }
+        Reader reader(*source, parser, read, options);
+        doc = reader.read_document(root);
+        parser.finish();
+        parser.observe(nullptr);
     }
-    if (const auto fault = find_well_formedness_fault(source->text(), decoded.encoding, xml, buffer.data())) {
+    if (const auto& fault = parser.fault()) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: " + fault->message, path,
                                    source->position_of(fault->offset));
         return result;
     }
+    source->adopt_line_starts(parser.take_line_starts());
     // A DOCTYPE has no place in an ESI file (the ETG schema defines the format) and is the
     // vehicle of entity-expansion bombs and external entities. It is never processed: entities
     // are not expanded, external ones are never fetched, and references stay as written.
-    for (const pugi::xml_node n : xml.children()) {
-        if (n.type() != pugi::node_doctype) continue;
-        const std::string_view declaration = n.value();
-        std::size_t at = static_cast<std::size_t>(std::max<std::ptrdiff_t>(n.offset_debug(), 0));
-        if (const auto open = source->text().rfind("<!", at); open != std::string::npos) at = open;
-        const bool entities = declaration.find("<!ENTITY") != std::string_view::npos;
+    if (const auto doctype = parser.doctype_declaration()) {
         result.diagnostics.emplace(Severity::warning, "xml-doctype",
-                                   entities ? "the DOCTYPE declares entities; they are not expanded and external ones are not "
-                                              "fetched, so &name; references stay as written"
-                                            : "the DOCTYPE is ignored; ESI files are defined by the ETG schema, not a DTD",
-                                   path, source->position_of(at));
+                                   doctype->declares_entities
+                                       ? "the DOCTYPE declares entities; they are not expanded and external ones are not "
+                                         "fetched, so &name; references stay as written"
+                                       : "the DOCTYPE is ignored; ESI files are defined by the ETG schema, not a DTD",
+                                   path, source->position_of(doctype->offset));
     }
-    const pugi::xml_node root = xml.document_element();
-    if (!root) {
-        result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: no root element", path, SourcePos{1, 1});
-        return result;
-    }
-    report_xinclude(*source, xml, buffer.data(), result.diagnostics);
-    report_undeclared_prefixes(*source, xml, buffer.data(), result.diagnostics);
-    Reader reader(*source, buffer, releasing, result.diagnostics, options);
-    EsiDocument doc = reader.read_document(root);
+    result.diagnostics.append(std::move(xinclude));
+    result.diagnostics.append(std::move(prefixes));
+    result.diagnostics.append(std::move(read));
     doc.path = path;
     doc.encoding = decoded.encoding;
     if (options.keep_source) doc.source = source;

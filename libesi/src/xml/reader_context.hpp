@@ -1,11 +1,12 @@
 #pragma once
-// The ESI XML reader's shared context: one Reader per document walks the pugixml DOM; its
-// element readers live in one file per concept, as the writer's do: reader.cpp (document,
-// EtherCATInfo, vendor, groups, unknown elements kept verbatim), reader_device.cpp (device,
-// SyncManagers, FMMUs, PDOs, Dc, Eeprom), reader_mailbox.cpp (mailbox protocols and InitCmds),
-// reader_dictionary.cpp (profiles and object dictionaries), reader_modules.cpp (modules and
-// slots). The scalar readers below (numbers, booleans, hex data, names) are defined here so that
-// every file inlines them: they run for nearly every attribute of a file.
+// The ESI XML reader's shared context: one Reader per document reads the element tree of
+// xml/tree_parser.hpp; its element readers live in one file per concept, as the writer's do:
+// reader.cpp (document, EtherCATInfo, vendor, groups, unknown elements kept verbatim),
+// reader_device.cpp (device, SyncManagers, FMMUs, PDOs, Dc, Eeprom), reader_mailbox.cpp (mailbox
+// protocols and InitCmds), reader_dictionary.cpp (profiles and object dictionaries),
+// reader_modules.cpp (modules and slots). The scalar readers below (numbers, booleans, hex data,
+// names) are defined here so that every file inlines them: they run for nearly every attribute of
+// a file.
 
 #include <algorithm>
 #include <cstdint>
@@ -13,7 +14,6 @@
 #include <cstring>
 #include <limits>
 #include <optional>
-#include <pugixml.hpp>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -22,9 +22,13 @@
 #include "esi/number.hpp"
 #include "esi/source_text.hpp"
 #include "esi/xml/reader.hpp"
-#include "xml/parse_buffer.hpp"
+#include "xml/element_tree.hpp"
+#include "xml/tree_parser.hpp"
 
 namespace esi::xml_reader {
+
+using xml_tree::Element;
+using Attr = xml_tree::Attribute;
 
 // Element and attribute names are compared with literals about ten times per element. This
 // compares the length, then a memcmp whose length is known at compile time, which the compiler
@@ -37,39 +41,30 @@ template <std::size_t N>
 
 class Reader {
 public:
-    // `buffer` is the copy of the source text pugixml parsed in place. With `releasing`, each
-    // element read is released (see release()).
-    Reader(const SourceText& source, ParseBuffer& buffer, bool releasing, Diagnostics& diagnostics, const ReadOptions& options)
-        : source_(source), parse_buffer_(buffer), buffer_(buffer.view()), cursor_(source), diagnostics_(diagnostics),
-          options_(options), releasing_(releasing) {}
+    // `parser` has read the root's start tag of `source`'s text; the reader streams the rest.
+    Reader(const SourceText& source, xml_tree::TreeParser& parser, Diagnostics& diagnostics, const ReadOptions& options)
+        : source_(source), parser_(parser), text_(source.text()), diagnostics_(diagnostics), options_(options) {}
 
-    EsiDocument read_document(const pugi::xml_node root);
+    EsiDocument read_document(const Element root);
 
 private:
     // ---- positions and diagnostics ------------------------------------------------------
-    // Where an element starts: the '<' before its name. Parsed in place, the name lies in our
-    // buffer at its offset in the text; one name() call finds it, where offset_debug() and
-    // type() cost two calls and ~45 instructions for every element read.
-    SourcePos pos_of(const pugi::xml_node element) {
-        const std::size_t offset = offset_of(element.name());
-        if (offset == npos) return {};  // not from the parse
-        return cursor_.position_of(offset > 0 ? offset - 1 : 0);
-    }
+    // Where an element starts: the '<' before its name (the parser computed it).
+    static SourcePos pos_of(const Element element) { return element.pos(); }
     static constexpr std::size_t npos = static_cast<std::size_t>(-1);
-    // The offset in the parse buffer (and the text) of a name or value parsed in place; npos
-    // for a string that is not in the buffer.
+    // The offset in the text of a name or value; npos for a value that is not in the text (it
+    // was decoded: it held a reference or a line break).
     std::size_t offset_of(const char* text) const {
         const auto at = reinterpret_cast<std::uintptr_t>(text);
-        const auto begin = reinterpret_cast<std::uintptr_t>(buffer_.data());
-        return at >= begin && at < begin + buffer_.size() ? at - begin : npos;
+        const auto begin = reinterpret_cast<std::uintptr_t>(text_.data());
+        return at >= begin && at < begin + text_.size() ? at - begin : npos;
     }
 
     Diagnostic& report(Severity severity, std::string rule, std::string message, SourcePos pos) {
         return diagnostics_.emplace(severity, std::move(rule), std::move(message), source_.path(), pos);
     }
-    // A safe fix replacing `length` bytes at `at`, a pointer into a value parsed in place; none
-    // when the text there is no longer what the file holds (pugixml unescapes values in place, so
-    // text after an entity reference has moved).
+    // A safe fix replacing `length` bytes at `at`, a pointer into a value; none when the value is
+    // not the file's text as written (a decoded value).
     std::optional<Fix> fix_at(const char* at, std::size_t length, std::string replacement, std::string description) const {
         const std::size_t offset = offset_of(at);
         if (offset == npos || offset + length > source_.text().size()) return std::nullopt;
@@ -94,27 +89,22 @@ private:
     }
 
     // ---- scalar values -------------------------------------------------------------------
-    // An element's character data. With parse_embed_pcdata it is the element's own value: one
-    // call instead of the three of text().get(), which only differs for text that is not
-    // embedded (CDATA, text after a comment or a child) and is asked then.
-    static const char* pcdata(const pugi::xml_node n) {
-        const char* value = n.value();
-        return *value ? value : n.text().get();
-    }
-    static std::string text_of(const pugi::xml_node node) { return std::string(trim(pcdata(node))); }
+    // An element's character data: its own text, or the first text after a child or a CDATA section.
+    static std::string_view pcdata(const Element n) { return n.text(); }
+    static std::string text_of(const Element node) { return std::string(trim(pcdata(node))); }
 
     // Where a scalar was read from: named ("Sm@StartAddress", or the element's name) and located
     // only when the value is bad, so that a good value costs no string allocation and no
     // position lookup.
     struct ValueSite {
-        pugi::xml_node element;
-        pugi::xml_attribute attribute = {};
+        Element element;
+        const Attr* attribute = nullptr;
         std::string_view label = {};  // used instead of the element/attribute names when set
     };
     static std::string describe(const ValueSite& site) {
         if (!site.label.empty()) return std::string(site.label);
-        if (site.attribute) return std::string(site.element.name()) + "@" + site.attribute.name();
-        return site.element.name();
+        if (site.attribute) return std::string(site.element.name()) + "@" + std::string(site.attribute->name);
+        return std::string(site.element.name());
     }
 
     std::optional<Number> number(std::string_view text, const ValueSite& site) {
@@ -137,7 +127,7 @@ private:
         }
         return parsed.value;
     }
-    std::optional<Number> number(const pugi::xml_node n) { return number(pcdata(n), ValueSite{n}); }
+    std::optional<Number> number(const Element n) { return number(pcdata(n), ValueSite{n}); }
 
     template <class T>
     std::optional<T> integer(std::string_view text, const ValueSite& site) {
@@ -164,16 +154,12 @@ private:
         }
     }
 
-    std::optional<std::uint32_t> u32(const pugi::xml_attribute a, const pugi::xml_node owner) {
-        return integer<std::uint32_t>(a.value(), ValueSite{owner, a});
-    }
-    std::optional<std::int32_t> i32(const pugi::xml_attribute a, const pugi::xml_node owner) {
-        return integer<std::int32_t>(a.value(), ValueSite{owner, a});
-    }
-    std::optional<std::uint32_t> u32(const pugi::xml_node n) { return integer<std::uint32_t>(pcdata(n), ValueSite{n}); }
-    std::optional<std::int32_t> i32(const pugi::xml_node n) { return integer<std::int32_t>(pcdata(n), ValueSite{n}); }
-    std::optional<std::int64_t> i64(const pugi::xml_node n) { return integer<std::int64_t>(pcdata(n), ValueSite{n}); }
-    std::optional<std::uint64_t> u64(const pugi::xml_node n) { return integer<std::uint64_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::uint32_t> u32(const Attr& a, const Element owner) { return integer<std::uint32_t>(a.value, ValueSite{owner, &a}); }
+    std::optional<std::int32_t> i32(const Attr& a, const Element owner) { return integer<std::int32_t>(a.value, ValueSite{owner, &a}); }
+    std::optional<std::uint32_t> u32(const Element n) { return integer<std::uint32_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::int32_t> i32(const Element n) { return integer<std::int32_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::int64_t> i64(const Element n) { return integer<std::int64_t>(pcdata(n), ValueSite{n}); }
+    std::optional<std::uint64_t> u64(const Element n) { return integer<std::uint64_t>(pcdata(n), ValueSite{n}); }
 
     std::optional<bool> boolean(std::string_view text, const ValueSite& site) {
         const auto b = parse_boolean(text);
@@ -182,10 +168,10 @@ private:
                    describe(site) + ": '" + excerpt(trim(text)) + "' is not a boolean (true, false, 1 or 0)", pos_of(site.element));
         return b;
     }
-    std::optional<bool> boolean(const pugi::xml_attribute a, const pugi::xml_node owner) { return boolean(a.value(), ValueSite{owner, a}); }
-    std::optional<bool> boolean(const pugi::xml_node n) { return boolean(pcdata(n), ValueSite{n}); }
+    std::optional<bool> boolean(const Attr& a, const Element owner) { return boolean(a.value, ValueSite{owner, &a}); }
+    std::optional<bool> boolean(const Element n) { return boolean(pcdata(n), ValueSite{n}); }
 
-    HexData hex(const pugi::xml_node n) {
+    HexData hex(const Element n) {
         HexData out;
         out.pos = pos_of(n);
         const std::string_view raw = trim(pcdata(n));
@@ -203,12 +189,12 @@ private:
         return out;
     }
 
-    LocalizedText localized(const pugi::xml_node n) {
+    LocalizedText localized(const Element n) {
         LocalizedText t;
         t.text = text_of(n);
         t.pos = pos_of(n);
-        for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-            if (is(a.name(), "LcId")) t.lcid = integer<std::uint32_t>(a.value(), ValueSite{n, a, "LcId"});
+        for (const Attr& a : n.attributes()) {
+            if (is(a.name, "LcId")) t.lcid = integer<std::uint32_t>(a.value, ValueSite{n, &a, "LcId"});
         }
         return t;
     }
@@ -217,90 +203,59 @@ private:
     // index is raised by the slot's or the slot group's increment for each instance). Every other
     // attribute goes to `other`; without one they are dropped, as the writer writes these two only.
     template <class Other>
-    void depend_on_slot(const pugi::xml_node n, std::optional<bool>& on_slot, std::optional<bool>& on_slot_group,
-                        Other&& other) {
-        for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-            const std::string_view an = a.name();
+    void depend_on_slot(const Element n, std::optional<bool>& on_slot, std::optional<bool>& on_slot_group, Other&& other) {
+        for (const Attr& a : n.attributes()) {
+            const std::string_view an = a.name;
             if (is(an, "DependOnSlot")) on_slot = boolean(a, n);
             else if (is(an, "DependOnSlotGroup")) on_slot_group = boolean(a, n);
             else other(a);
         }
     }
-    void depend_on_slot(const pugi::xml_node n, std::optional<bool>& on_slot, std::optional<bool>& on_slot_group) {
-        depend_on_slot(n, on_slot, on_slot_group, [](pugi::xml_attribute) {});
+    void depend_on_slot(const Element n, std::optional<bool>& on_slot, std::optional<bool>& on_slot_group) {
+        depend_on_slot(n, on_slot, on_slot_group, [](const Attr&) {});
     }
 
     // ---- verbatim store ------------------------------------------------------------------
-    void verbatim(XmlElement& e, const pugi::xml_node n, std::string_view after, std::size_t depth);
+    void verbatim(XmlElement& e, const Element n, std::string_view after, std::size_t depth);
 
-    void keep(Extras& extras, const pugi::xml_node n, std::string_view after) {
+    void keep(Extras& extras, const Element n, std::string_view after) {
         verbatim(extras.elements.emplace_back(), n, after, 1);
     }
-    static void keep(Extras& extras, const pugi::xml_attribute a) { extras.attributes.push_back({a.name(), a.value()}); }
+    static void keep(Extras& extras, const Attr& a) { extras.attributes.push_back({std::string(a.name), std::string(a.value)}); }
 
     // Iterates element children, tracking the name of the previous element for Extras.after.
-    // (pugixml is a shared library: every node access is a call. Walking with first_child /
-    // next_sibling and taking each name once costs four calls and one strlen per child; the
-    // range-for over children() costs seven calls and two.)
-    // Element children are the ones with a name: with the parse options used, an element's
-    // other children are character data (pcdata, cdata), which has none; comments, processing
-    // instructions and declarations are not parsed. So the name tells without a type() call.
-    // The next sibling is taken before `f` runs, so `f` may release the child it was given.
+    // The children that are not elements (character data after a child, CDATA sections) are
+    // skipped.
     template <class F>
-    void for_children(const pugi::xml_node n, F&& f) {
+    static void for_children(const Element n, F&& f) {
         std::string_view previous;
-        for (pugi::xml_node c = n.first_child(), next; c; c = next) {
-            next = c.next_sibling();
+        for (Element c = n.first_child(); c; c = c.next_sibling()) {
+            if (c.kind() != xml_tree::NodeKind::element) continue;
             const std::string_view name = c.name();
-            if (name.empty()) continue;
             f(c, name, previous);
             previous = name;
         }
     }
 
-    // pugixml frees a subtree recursively, a stack frame per level, and a hostile file nests
-    // elements a million deep: the subtree is taken apart from its leaves up instead, each
-    // remove_child freeing a node that has no children.
-    static void free_subtree(pugi::xml_node parent, const pugi::xml_node top) {
-        for (pugi::xml_node n = top; n != top || n.first_child();) {
-            if (const pugi::xml_node c = n.first_child()) {
-                n = c;
-                continue;
-            }
-            pugi::xml_node up = n.parent();
-            up.remove_child(n);
-            n = up;
-        }
-        parent.remove_child(top);
+    // The same for an element whose content is not read yet (the root, and the elements that hold
+    // a catalogue's devices and modules): each child is read from the text in turn and dropped
+    // once `f` has it in the model, so that a catalogue is never in memory as a whole. `f` reads a
+    // child with expanded() or streams it further with stream_children().
+    template <class F>
+    void stream_children(const Element n, F&& f) {
+        parser_.stream_children(n, f);
     }
-
-    // Frees an element that has been read into the model (in a document of at least
-    // ReadOptions::release_elements_from_bytes): its DOM (a big catalogue's DOM is
-    // about twice the file) and the pages of the parse buffer from its start tag to the next
-    // sibling. Releasing each Device, Module, Object and DataType as soon as it is read lets the
-    // model allocated next reuse that memory (pugixml returns a page of nodes when all of them
-    // are freed), so that the DOM, the parse buffer and the model never peak together.
-    // Nothing refers to the element afterwards: positions are byte offsets, kept text is copied,
-    // and the well-formedness and XInclude checks ran before. What lies between it and its next
-    // sibling is at most character data, which no loop that releases reads. Its name is gone
-    // with the pages: the loops that release ignore the `previous` name for_children hands on.
-    void release(pugi::xml_node parent, const pugi::xml_node child) {
-        if (!releasing_) return;
-        const pugi::xml_node next = child.next_sibling();
-        const std::size_t begin = offset_of(child.name());
-        free_subtree(parent, child);
-        if (!next || begin == npos) return;
-        const char* next_text = next.name()[0] != '\0' ? next.name() : next.value();
-        if (const std::size_t end = offset_of(next_text); end != npos) parse_buffer_.give_back(begin, end);
-    }
+    // Reads the rest of an element handed out by stream_children: false after a fault, and then
+    // the element must not be read.
+    bool expanded(const Element n) { return parser_.expand(n); }
 
     // Reserves room for the children named `name` about to be read into `items`: large model
     // elements (an Object is about 1 KB) are then neither moved while the vector grows nor
     // left with up to half of its capacity unused.
     template <class T>
-    static void reserve_for(std::vector<T>& items, const pugi::xml_node n, const char* name) {
+    static void reserve_for(std::vector<T>& items, const Element n, std::string_view name) {
         std::size_t count = 0;
-        for (pugi::xml_node c = n.child(name); c; c = c.next_sibling(name)) ++count;
+        for (Element c = n.child(name); c; c = c.next_sibling(name)) ++count;
         items.reserve(items.size() + count);
     }
 
@@ -310,47 +265,46 @@ private:
 
     // ---- model elements ------------------------------------------------------------------
     // reader.cpp
-    void read_info(EtherCATInfo& out, const pugi::xml_node n);
-    void read_vendor(Vendor& out, const pugi::xml_node n);
-    void read_group(Group& out, const pugi::xml_node n);
-    bool read_image(Images& images, const pugi::xml_node c, std::string_view name);
+    void read_info(EtherCATInfo& out, const Element n);
+    void read_modules(EtherCATInfo& out, const Element n);
+    void read_vendor(Vendor& out, const Element n);
+    void read_group(Group& out, const Element n);
+    bool read_image(Images& images, const Element c, std::string_view name);
     // reader_device.cpp
-    void read_device(Device& out, const pugi::xml_node n);
-    void read_identity(DeviceIdentity& out, const pugi::xml_node n);
-    void read_sm(SyncManager& out, const pugi::xml_node n);
-    void read_fmmu(Fmmu& out, const pugi::xml_node n);
-    void read_su(SyncUnit& out, const pugi::xml_node n);
-    void read_pdo(Pdo& out, const pugi::xml_node n, PdoDirection direction);
-    void read_entry(PdoEntry& out, const pugi::xml_node n);
-    void read_dc(Dc& out, const pugi::xml_node n);
-    void read_op_mode(DcOpMode& out, const pugi::xml_node n);
-    DcTime read_dc_time(const pugi::xml_node n);
-    void read_eeprom(Eeprom& out, const pugi::xml_node n);
+    void read_device(Device& out, const Element n);
+    void read_identity(DeviceIdentity& out, const Element n);
+    void read_sm(SyncManager& out, const Element n);
+    void read_fmmu(Fmmu& out, const Element n);
+    void read_su(SyncUnit& out, const Element n);
+    void read_pdo(Pdo& out, const Element n, PdoDirection direction);
+    void read_entry(PdoEntry& out, const Element n);
+    void read_dc(Dc& out, const Element n);
+    void read_op_mode(DcOpMode& out, const Element n);
+    DcTime read_dc_time(const Element n);
+    void read_eeprom(Eeprom& out, const Element n);
     // reader_mailbox.cpp
-    void read_mailbox(Mailbox& out, const pugi::xml_node n);
-    void read_init_cmd(InitCmd& out, const pugi::xml_node n);
+    void read_mailbox(Mailbox& out, const Element n);
+    void read_init_cmd(InitCmd& out, const Element n);
     template <class Protocol, std::size_t N, class Attribute>
-    void read_protocol(Protocol& out, const pugi::xml_node n, const MailboxFlag<Protocol> (&flags)[N], Attribute&& attribute);
+    void read_protocol(Protocol& out, const Element n, const MailboxFlag<Protocol> (&flags)[N], Attribute&& attribute);
     // reader_dictionary.cpp
-    void read_profile(Profile& out, const pugi::xml_node n);
-    void read_dictionary(Dictionary& out, const pugi::xml_node n);
-    void read_data_type(DataType& out, const pugi::xml_node n);
-    void read_type_sub_item(DataTypeSubItem& out, const pugi::xml_node n);
-    void read_object(Object& out, const pugi::xml_node n);
-    void read_object_info(ObjectInfo& out, const pugi::xml_node n, std::size_t depth);
-    void read_flags(ObjectFlags& out, const pugi::xml_node n);
+    void read_profile(Profile& out, const Element n);
+    void read_dictionary(Dictionary& out, const Element n);
+    void read_data_type(DataType& out, const Element n);
+    void read_type_sub_item(DataTypeSubItem& out, const Element n);
+    void read_object(Object& out, const Element n);
+    void read_object_info(ObjectInfo& out, const Element n, std::size_t depth);
+    void read_flags(ObjectFlags& out, const Element n);
     // reader_modules.cpp
-    void read_module(Module& out, const pugi::xml_node n);
-    void read_slots(Slots& out, const pugi::xml_node n);
-    void read_slot(Slot& out, const pugi::xml_node n);
+    void read_module(Module& out, const Element n);
+    void read_slots(Slots& out, const Element n);
+    void read_slot(Slot& out, const Element n);
 
     const SourceText& source_;
-    ParseBuffer& parse_buffer_;
-    std::string_view buffer_;
-    PositionCursor cursor_;
+    xml_tree::TreeParser& parser_;
+    std::string_view text_;
     Diagnostics& diagnostics_;
     const ReadOptions& options_;
-    const bool releasing_;
     bool depth_reported_ = false;
 };
 

@@ -5,30 +5,30 @@
 
 namespace esi::xml_reader {
 
-void Reader::read_identity(DeviceIdentity& t, const pugi::xml_node n) {
+void Reader::read_identity(DeviceIdentity& t, const Element n) {
     t.pos = pos_of(n);
     t.text = text_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "ProductCode")) t.product_code = u32(a, n);
         else if (is(an, "RevisionNo")) t.revision_no = u32(a, n);
         else if (is(an, "SerialNo")) t.serial_no = u32(a, n);
         else if (is(an, "TcCfgModeSafeOp")) t.tc_cfg_mode_safe_op = boolean(a, n);
         else keep(t.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(t.extras, c, previous); });
+    for_children(n, [&](const Element c, std::string_view, std::string_view previous) { keep(t.extras, c, previous); });
 }
 
-void Reader::read_device(Device& d, const pugi::xml_node n) {
+void Reader::read_device(Device& d, const Element n) {
     d.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
-        if (is(an, "Physics")) d.physics = a.value();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
+        if (is(an, "Physics")) d.physics = a.value;
         else if (is(an, "Invisible")) d.invisible = boolean(a, n);
         else keep(d.extras, a);
     }
     bool has_type = false;
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Type")) {
             if (has_type) d.type = {};  // a repeated Type replaces the first
             read_identity(d.type, c);
@@ -54,11 +54,11 @@ void Reader::read_device(Device& d, const pugi::xml_node n) {
     if (!has_type) missing("Device", "Type", d.pos);
 }
 
-void Reader::read_sm(SyncManager& sm, const pugi::xml_node n) {
+void Reader::read_sm(SyncManager& sm, const Element n) {
     sm.pos = pos_of(n);
     sm.type = text_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "StartAddress")) sm.start_address = u32(a, n);
         else if (is(an, "ControlByte")) sm.control_byte = u32(a, n);
         else if (is(an, "DefaultSize")) sm.default_size = u32(a, n);
@@ -72,41 +72,41 @@ void Reader::read_sm(SyncManager& sm, const pugi::xml_node n) {
         else if (is(an, "FixedAssignment")) sm.fixed_assignment = boolean(a, n);
         else keep(sm.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(sm.extras, c, previous); });
+    for_children(n, [&](const Element c, std::string_view, std::string_view previous) { keep(sm.extras, c, previous); });
 }
 
-void Reader::read_fmmu(Fmmu& f, const pugi::xml_node n) {
+void Reader::read_fmmu(Fmmu& f, const Element n) {
     f.pos = pos_of(n);
     f.type = text_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "Sm")) f.sm = u32(a, n);
         else if (is(an, "Su")) f.su = u32(a, n);
         else if (is(an, "OpOnly")) f.op_only = boolean(a, n);
         else keep(f.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(f.extras, c, previous); });
+    for_children(n, [&](const Element c, std::string_view, std::string_view previous) { keep(f.extras, c, previous); });
 }
 
-void Reader::read_su(SyncUnit& s, const pugi::xml_node n) {
+void Reader::read_su(SyncUnit& s, const Element n) {
     s.pos = pos_of(n);
     s.text = text_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "SeparateSu")) s.separate_su = boolean(a, n);
         else if (is(an, "SeparateFrame")) s.separate_frame = boolean(a, n);
         else if (is(an, "DependOnInputState")) s.depend_on_input_state = boolean(a, n);
         else if (is(an, "FrameRepeatSupport")) s.frame_repeat_support = boolean(a, n);
         else keep(s.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view, std::string_view previous) { keep(s.extras, c, previous); });
+    for_children(n, [&](const Element c, std::string_view, std::string_view previous) { keep(s.extras, c, previous); });
 }
 
-void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
+void Reader::read_pdo(Pdo& p, const Element n, PdoDirection direction) {
     p.direction = direction;
     p.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "Fixed")) p.fixed = boolean(a, n);
         else if (is(an, "Mandatory")) p.mandatory = boolean(a, n);
         else if (is(an, "Virtual")) p.is_virtual = boolean(a, n);
@@ -119,13 +119,13 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
         else if (is(an, "OSIndexInc")) p.os_index_inc = i32(a, n);
         else if (is(an, "OverwrittenByModule")) p.overwritten_by_module = boolean(a, n);
         else if (is(an, "SRA_Parameter")) p.sra_parameter = boolean(a, n);
-        else if (is(an, "SafetyPdoType")) p.safety_pdo_type = a.value();
+        else if (is(an, "SafetyPdoType")) p.safety_pdo_type = a.value;
         else if (is(an, "SafetyConnNumber")) p.safety_conn_number = i32(a, n);
         else keep(p.extras, a);
     }
     reserve_for(p.entries, n, "Entry");
     bool has_index = false;
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Index")) {
             has_index = true;
             p.index_pos = pos_of(c);
@@ -149,16 +149,16 @@ void Reader::read_pdo(Pdo& p, const pugi::xml_node n, PdoDirection direction) {
     if (!has_index && !n.attribute("Ref")) missing(n.name(), "Index", p.pos);
 }
 
-void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
+void Reader::read_entry(PdoEntry& e, const Element n) {
     e.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "Fixed")) e.fixed = boolean(a, n);
         else keep(e.extras, a);
     }
     bool has_index = false;
     bool has_bit_len = false;
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Index")) {
             has_index = true;
             const std::optional<std::uint32_t> index = u32(c);
@@ -176,10 +176,10 @@ void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
         else if (is(name, "DataType")) {
             e.data_type = text_of(c);
             e.data_type_pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "DScale")) e.data_type_dscale = a.value();
-                else if (is(an, "SwapData")) e.data_type_swap_data = std::string(trim(a.value()));
+            for (const Attr& a : c.attributes()) {
+                const std::string_view an = a.name;
+                if (is(an, "DScale")) e.data_type_dscale = a.value;
+                else if (is(an, "SwapData")) e.data_type_swap_data = std::string(trim(a.value));
             }
         } else keep(e.extras, c, previous);
     });
@@ -187,12 +187,12 @@ void Reader::read_entry(PdoEntry& e, const pugi::xml_node n) {
     if (!has_bit_len) missing("Entry", "BitLen", e.pos);
 }
 
-DcTime Reader::read_dc_time(const pugi::xml_node n) {
+DcTime Reader::read_dc_time(const Element n) {
     DcTime t;
     t.pos = pos_of(n);
     t.value = i64(n).value_or(0);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "Factor")) t.factor = i32(a, n);
         else if (is(an, "Input")) t.input = boolean(a, n);
         else if (is(an, "OutputDelayTime")) t.output_delay_time = i32(a, n);
@@ -201,10 +201,10 @@ DcTime Reader::read_dc_time(const pugi::xml_node n) {
     return t;
 }
 
-void Reader::read_op_mode(DcOpMode& m, const pugi::xml_node n) {
+void Reader::read_op_mode(DcOpMode& m, const Element n) {
     m.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(m.extras, a);
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for (const Attr& a : n.attributes()) keep(m.extras, a);
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Name")) m.name = text_of(c);
         else if (is(name, "Desc")) m.desc = text_of(c);
         else if (is(name, "AssignActivate")) {
@@ -221,10 +221,10 @@ void Reader::read_op_mode(DcOpMode& m, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_dc(Dc& dc, const pugi::xml_node n) {
+void Reader::read_dc(Dc& dc, const Element n) {
     dc.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "UnknownFRMW")) dc.unknown_frmw = boolean(a, n);
         else if (is(an, "Unknown64Bit")) dc.unknown_64bit = boolean(a, n);
         else if (is(an, "ExternalRefClock")) dc.external_ref_clock = boolean(a, n);
@@ -232,19 +232,19 @@ void Reader::read_dc(Dc& dc, const pugi::xml_node n) {
         else if (is(an, "TimeLoopControlOnly")) dc.time_loop_control_only = boolean(a, n);
         else keep(dc.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "OpMode")) read_op_mode(dc.op_modes.emplace_back(), c);
         else keep(dc.extras, c, previous);
     });
 }
 
-void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
+void Reader::read_eeprom(Eeprom& e, const Element n) {
     e.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        if (is(a.name(), "AssignToPdi")) e.assign_to_pdi = boolean(a, n);
+    for (const Attr& a : n.attributes()) {
+        if (is(a.name, "AssignToPdi")) e.assign_to_pdi = boolean(a, n);
         else keep(e.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Data")) e.data = hex(c);
         else if (is(name, "ByteSize")) {
             e.byte_size = u32(c);
@@ -254,11 +254,11 @@ void Reader::read_eeprom(Eeprom& e, const pugi::xml_node n) {
         else if (is(name, "Category")) {
             EepromCategory cat;
             cat.pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                if (is(a.name(), "PreserveOnlineData")) cat.preserve_online_data = boolean(a, c);
+            for (const Attr& a : c.attributes()) {
+                if (is(a.name, "PreserveOnlineData")) cat.preserve_online_data = boolean(a, c);
                 else keep(cat.extras, a);
             }
-            for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
+            for_children(c, [&](const Element cc, std::string_view cn, std::string_view prev) {
                 if (is(cn, "CatNo")) {
                     cat.cat_no = u32(cc).value_or(0);
                     cat.cat_no_pos = pos_of(cc);

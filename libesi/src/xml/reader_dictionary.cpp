@@ -5,13 +5,13 @@
 
 namespace esi::xml_reader {
 
-void Reader::read_profile(Profile& p, const pugi::xml_node n) {
+void Reader::read_profile(Profile& p, const Element n) {
     p.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        if (is(a.name(), "Channel")) p.channel = i32(a, n);
+    for (const Attr& a : n.attributes()) {
+        if (is(a.name, "Channel")) p.channel = i32(a, n);
         else keep(p.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "ProfileNo")) p.profile_no = i32(c);
         else if (is(name, "AddInfo")) p.add_info = i32(c);
         else if (is(name, "DictionaryFile")) p.dictionary_file = text_of(c);
@@ -20,23 +20,21 @@ void Reader::read_profile(Profile& p, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_dictionary(Dictionary& d, const pugi::xml_node n) {
+void Reader::read_dictionary(Dictionary& d, const Element n) {
     d.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(d.extras, a);
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for (const Attr& a : n.attributes()) keep(d.extras, a);
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "DataTypes")) {
             reserve_for(d.data_types, c, "DataType");
-            for_children(c, [&](const pugi::xml_node t, std::string_view tn, std::string_view) {
+            for_children(c, [&](const Element t, std::string_view tn, std::string_view) {
                 if (!is(tn, "DataType")) return;
                 read_data_type(d.data_types.emplace_back(), t);
-                release(c, t);
             });
         } else if (is(name, "Objects")) {
             reserve_for(d.objects, c, "Object");
-            for_children(c, [&](const pugi::xml_node o, std::string_view on, std::string_view) {
+            for_children(c, [&](const Element o, std::string_view on, std::string_view) {
                 if (!is(on, "Object")) return;
                 read_object(d.objects.emplace_back(), o);
-                release(c, o);
             });
         } else {
             keep(d.extras, c, previous);
@@ -44,11 +42,11 @@ void Reader::read_dictionary(Dictionary& d, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_data_type(DataType& t, const pugi::xml_node n) {
+void Reader::read_data_type(DataType& t, const Element n) {
     t.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(t.extras, a);
+    for (const Attr& a : n.attributes()) keep(t.extras, a);
     reserve_for(t.sub_items, n, "SubItem");
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Index")) t.index = u32(c);
         else if (is(name, "Name")) {
             t.name = text_of(c);
@@ -59,7 +57,7 @@ void Reader::read_data_type(DataType& t, const pugi::xml_node n) {
         else if (is(name, "ArrayInfo")) {
             ArrayInfo ai;
             ai.pos = pos_of(c);
-            for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view) {
+            for_children(c, [&](const Element cc, std::string_view cn, std::string_view) {
                 if (is(cn, "LBound")) ai.lower_bound = i64(cc).value_or(0);
                 else if (is(cn, "Elements")) ai.elements = i64(cc).value_or(0);
             });
@@ -68,7 +66,7 @@ void Reader::read_data_type(DataType& t, const pugi::xml_node n) {
         else if (is(name, "EnumInfo")) {
             EnumValue ev;
             ev.pos = pos_of(c);
-            for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view) {
+            for_children(c, [&](const Element cc, std::string_view cn, std::string_view) {
                 if (is(cn, "Text")) ev.texts.push_back(localized(cc));
                 else if (is(cn, "Enum")) ev.value = number(cc).value_or(Number{});
                 else if (is(cn, "Comment")) ev.comments.push_back(localized(cc));
@@ -78,10 +76,10 @@ void Reader::read_data_type(DataType& t, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_type_sub_item(DataTypeSubItem& s, const pugi::xml_node n) {
+void Reader::read_type_sub_item(DataTypeSubItem& s, const Element n) {
     s.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(s.extras, a);
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for (const Attr& a : n.attributes()) keep(s.extras, a);
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "SubIdx")) s.subindex = u32(c);
         else if (is(name, "Name")) s.name = text_of(c);
         else if (is(name, "DisplayName")) s.display_names.push_back(localized(c));
@@ -99,16 +97,16 @@ void Reader::read_type_sub_item(DataTypeSubItem& s, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_flags(ObjectFlags& f, const pugi::xml_node n) {
+void Reader::read_flags(ObjectFlags& f, const Element n) {
     f.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(f.extras, a);
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for (const Attr& a : n.attributes()) keep(f.extras, a);
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Access")) {
             f.access = text_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
-                if (is(an, "ReadRestrictions")) f.access_read_restrictions = a.value();
-                else if (is(an, "WriteRestrictions")) f.access_write_restrictions = a.value();
+            for (const Attr& a : c.attributes()) {
+                const std::string_view an = a.name;
+                if (is(an, "ReadRestrictions")) f.access_read_restrictions = a.value;
+                else if (is(an, "WriteRestrictions")) f.access_write_restrictions = a.value;
             }
         } else if (is(name, "Category")) f.category = text_of(c);
         else if (is(name, "PdoMapping")) f.pdo_mapping = text_of(c);
@@ -122,13 +120,13 @@ void Reader::read_flags(ObjectFlags& f, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_object_info(ObjectInfo& info, const pugi::xml_node n, std::size_t depth) {
+void Reader::read_object_info(ObjectInfo& info, const Element n, std::size_t depth) {
     info.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(info.extras, a);
+    for (const Attr& a : n.attributes()) keep(info.extras, a);
     // Only an object's own Info lists SubItems in practice; the Infos of sub-items are leaves, and
     // counting their children costs a lookup each.
     if (depth == 0) reserve_for(info.sub_items, n, "SubItem");
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "DefaultString")) info.default_string = pcdata(c);
         else if (is(name, "MinData")) info.min_data = hex(c);
         else if (is(name, "MaxData")) info.max_data = hex(c);
@@ -142,7 +140,7 @@ void Reader::read_object_info(ObjectInfo& info, const pugi::xml_node n, std::siz
             ObjectSubItemInfo& sub = info.sub_items.emplace_back();
             sub.pos = pos_of(c);
             bool has_info = false;
-            for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
+            for_children(c, [&](const Element cc, std::string_view cn, std::string_view prev) {
                 if (is(cn, "Name")) sub.name = text_of(cc);
                 else if (is(cn, "Info")) {
                     if (has_info) sub.info = {};  // a repeated Info replaces the first
@@ -154,17 +152,17 @@ void Reader::read_object_info(ObjectInfo& info, const pugi::xml_node n, std::siz
     });
 }
 
-void Reader::read_object(Object& o, const pugi::xml_node n) {
+void Reader::read_object(Object& o, const Element n) {
     o.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(o.extras, a);
+    for (const Attr& a : n.attributes()) keep(o.extras, a);
     bool has_index = false;
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Index")) {
             has_index = true;
             o.index = u32(c).value_or(0);
             o.index_pos = pos_of(c);
-            depend_on_slot(c, o.index_depend_on_slot, o.index_depend_on_slot_group, [&](const pugi::xml_attribute a) {
-                if (is(a.name(), "OverwrittenByModule")) o.index_overwritten_by_module = boolean(a, c);
+            depend_on_slot(c, o.index_depend_on_slot, o.index_depend_on_slot_group, [&](const Attr& a) {
+                if (is(a.name, "OverwrittenByModule")) o.index_overwritten_by_module = boolean(a, c);
             });
         } else if (is(name, "Name")) o.names.push_back(localized(c));
         else if (is(name, "Comment")) o.comments.push_back(localized(c));

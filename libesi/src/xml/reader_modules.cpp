@@ -5,17 +5,17 @@
 
 namespace esi::xml_reader {
 
-void Reader::read_module(Module& m, const pugi::xml_node n) {
+void Reader::read_module(Module& m, const Element n) {
     m.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) keep(m.extras, a);
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for (const Attr& a : n.attributes()) keep(m.extras, a);
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Type")) {
             m.type = text_of(c);
             m.type_pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) {
-                const std::string_view an = a.name();
+            for (const Attr& a : c.attributes()) {
+                const std::string_view an = a.name;
                 if (is(an, "ModuleIdent")) m.module_ident = u32(a, c).value_or(0);
-                else if (is(an, "ModuleClass")) m.module_class = a.value();
+                else if (is(an, "ModuleClass")) m.module_class = a.value;
                 else if (is(an, "ModulePdoGroup")) m.module_pdo_group = i32(a, c);
                 else keep(m.type_extras, a);
             }
@@ -29,10 +29,10 @@ void Reader::read_module(Module& m, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_slot(Slot& s, const pugi::xml_node n) {
+void Reader::read_slot(Slot& s, const Element n) {
     s.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "SlotGroup")) s.slot_group = u32(a, n);
         else if (is(an, "MinInstances")) s.min_instances = u32(a, n).value_or(0);
         else if (is(an, "MaxInstances")) s.max_instances = u32(a, n).value_or(0);
@@ -44,20 +44,20 @@ void Reader::read_slot(Slot& s, const pugi::xml_node n) {
         else if (is(an, "Fallback")) s.fallback = u32(a, n);
         else keep(s.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Name")) s.names.push_back(localized(c));
         else if (is(name, "ModuleIdent")) {
             SlotModuleIdent id;
             id.pos = pos_of(c);
             id.value = u32(c).value_or(0);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute())
-                if (is(a.name(), "Default")) id.default_ident = u32(a, c);
+            for (const Attr& a : c.attributes())
+                if (is(a.name, "Default")) id.default_ident = u32(a, c);
             s.module_idents.push_back(id);
         } else if (is(name, "ModuleClass")) {
             SlotModuleClass mc;
             mc.pos = pos_of(c);
-            for (pugi::xml_attribute a = c.first_attribute(); a; a = a.next_attribute()) keep(mc.extras, a);
-            for_children(c, [&](const pugi::xml_node cc, std::string_view cn, std::string_view prev) {
+            for (const Attr& a : c.attributes()) keep(mc.extras, a);
+            for_children(c, [&](const Element cc, std::string_view cn, std::string_view prev) {
                 if (is(cn, "Class")) mc.class_name = text_of(cc);
                 else if (is(cn, "VendorId")) mc.vendor_id = u32(cc);
                 else if (is(cn, "Name")) mc.names.push_back(localized(cc));
@@ -68,10 +68,10 @@ void Reader::read_slot(Slot& s, const pugi::xml_node n) {
     });
 }
 
-void Reader::read_slots(Slots& s, const pugi::xml_node n) {
+void Reader::read_slots(Slots& s, const Element n) {
     s.pos = pos_of(n);
-    for (pugi::xml_attribute a = n.first_attribute(); a; a = a.next_attribute()) {
-        const std::string_view an = a.name();
+    for (const Attr& a : n.attributes()) {
+        const std::string_view an = a.name;
         if (is(an, "MaxSlotCount")) s.max_slot_count = u32(a, n);
         else if (is(an, "MaxSlotGroupCount")) s.max_slot_group_count = u32(a, n);
         else if (is(an, "SlotPdoIncrement")) s.slot_pdo_increment = u32(a, n);
@@ -80,7 +80,7 @@ void Reader::read_slots(Slots& s, const pugi::xml_node n) {
         else if (is(an, "SlotGroupIndexIncrement")) s.slot_group_index_increment = u32(a, n);
         else keep(s.extras, a);
     }
-    for_children(n, [&](const pugi::xml_node c, std::string_view name, std::string_view previous) {
+    for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Slot")) read_slot(s.slots.emplace_back(), c);
         else keep(s.extras, c, previous);
     });

@@ -16,9 +16,8 @@ namespace xml_well_formed {
 
 // ---- document ------------------------------------------------------------------------------
 
-// [1] document ::= prolog element Misc*. The prolog is parsed by the grammar; from the root's
-// start tag on, walk() looks only where pugixml may have let a fault through.
-bool Scanner::document() {
+// [22] prolog ::= XMLDecl? Misc* (doctypedecl Misc*)?, up to the '<' of the root element.
+bool Scanner::prolog() {
     // [23] XMLDecl is allowed only at the very start (the byte-order mark is gone already).
     if (starts("<?xml") && (class_of(peek(5)) & space || peek(5) == '?'))
         if (!xml_declaration()) return false;
@@ -26,53 +25,9 @@ bool Scanner::document() {
     for (;;) {
         skip_space();
         if (at_end()) return fail(p_, "no root element");
-        if (*p_ == '<' && (class_of(peek(1)) & (name_start | non_ascii))) break;
+        if (*p_ == '<' && (class_of(peek(1)) & (name_start | non_ascii))) return true;
         if (!prolog_item(doctype_seen)) return false;
     }
-    return walk();
-}
-
-// From the root's start tag to the end of the text. pugixml accepted the document: its tags are
-// balanced, its ASCII names are XML names and every attribute is Name="value". What it lets
-// through hides behind one of a few bytes (class `candidate`): a control character or 0xEF, a byte
-// beyond ASCII (a name character XML does not allow), '&' (a reference), ']' (']]>'), '=' (an
-// attribute: repeated, or '<' or a bad reference in its value), and '!' or '?' after '<'
-// (comments, CDATA sections, processing instructions, a misplaced DOCTYPE). The walk jumps from
-// one such byte to the next; a byte inside markup gets that whole construct parsed by the grammar,
-// once. Every construct that may hold '<' or '>' as data starts with a candidate ('<!', '<?', or
-// the '=' before an attribute value), so the nearest '<' or '>' before a candidate tells whether
-// it is inside markup. Text after the root element is left to the caller (pugixml's tree has it).
-// Invariant: everything before `known` is checked, and `known` lies in character data.
-bool Scanner::walk() {
-    const char* known = p_;
-    const char* c = p_;
-    while ((c = find_first(c, end_, candidate_bytes)) < end_) {
-        if (class_of(*c) & check) {  // a forbidden character wherever it stands, or a harmless 0xEF
-            p_ = c;
-            if (!checked_character()) return false;
-            c = p_;
-            continue;
-        }
-        const char* q = c;
-        while (q > known && q[-1] != '<' && q[-1] != '>') --q;
-        if (q > known && q[-1] == '<') {
-            p_ = q - 1;
-            if (!markup()) return false;
-            known = c = p_;
-            continue;
-        }
-        p_ = c;
-        if (*c == '&') {
-            if (!reference(false)) return false;
-        } else if (*c == ']' && starts("]]>")) {
-            return fail(c, "']]>' in character data (write ]]&gt;)");
-        } else {
-            ++p_;  // '=', '!', '?', ']' or a byte beyond ASCII in text
-        }
-        known = c = p_;
-    }
-    p_ = end_;
-    return true;
 }
 
 // One construct starting at '<' inside or after the root element.
@@ -103,7 +58,10 @@ bool Scanner::prolog_item(bool& doctype_seen) {
         if (doctype_seen) return fail(p_, "a second DOCTYPE");
         doctype_seen = true;
         checker_.doctype_seen = true;
-        return doctype();
+        checker_.doctype_begin = static_cast<std::size_t>(p_ - begin_);
+        const bool ok = doctype();
+        checker_.doctype_end = static_cast<std::size_t>(p_ - begin_);
+        return ok;
     }
     if (starts("<![CDATA[")) return fail(p_, "a CDATA section outside the root element");
     if (*p_ == '<') return fail(p_, "markup before the root element that is not a comment, processing instruction or DOCTYPE");
@@ -446,43 +404,7 @@ bool Scanner::entity_attribute() {
 
 bool Scanner::entity_declarations() { return internal_subset(true); }
 
-// [1]: after the root element only comments, processing instructions and white space. pugixml
-// (in fragment mode) keeps text, CDATA sections and further elements there as nodes of the
-// document; their names and values lie in the parse buffer at their offsets in the text.
-void Checker::after_root(const pugi::xml_document& parsed, const char* parse_buffer) {
-    const auto offset_of = [&](const char* p) {
-        return p >= parse_buffer && p < parse_buffer + text_.size() ? static_cast<std::size_t>(p - parse_buffer) : text_.size();
-    };
-    bool root_seen = false;
-    for (const pugi::xml_node n : parsed.children()) {
-        const pugi::xml_node_type type = n.type();
-        if (type == pugi::node_element) {
-            if (root_seen) {
-                const std::size_t at = offset_of(n.name());
-                fail(at > 0 ? at - 1 : at, "a second root element " + quoted(n.name()) + "; a document has exactly one");
-                return;
-            }
-            root_seen = true;
-        } else if (root_seen && type == pugi::node_pcdata) {
-            std::size_t at = offset_of(n.value());
-            while (at < text_.size() && (class_of(text_[at]) & space)) ++at;
-            fail(at, "text after the root element");
-            return;
-        } else if (root_seen && type == pugi::node_cdata) {
-            const std::size_t at = offset_of(n.value());
-            fail(at >= 9 ? at - 9 : at, "a CDATA section after the root element");
-            return;
-        }
-    }
-}
-
 }  // namespace xml_well_formed
-
-std::optional<WellFormednessFault> find_well_formedness_fault(const std::string& text, SourceEncoding encoding,
-                                                              const pugi::xml_document& parsed, const char* parse_buffer) {
-    xml_well_formed::Checker checker(text, encoding);
-    return checker.run(parsed, parse_buffer);
-}
 
 std::optional<WellFormednessFault> find_content_fault(const std::string& text) {
     xml_well_formed::Checker checker(text, SourceEncoding::utf8);

@@ -4,8 +4,11 @@
 // names refer to it). A Scanner makes one pass over one text; the Checker holds what the passes
 // share (declared entities, the fault nearest the start). The productions live in one file per
 // part of the grammar: well_formed_scanner.cpp (tokens: names, literals, forbidden characters),
-// well_formed.cpp (the document, its content and references) and well_formed_dtd.cpp (the
-// DOCTYPE and its declarations).
+// well_formed.cpp (the prolog, markup, references and the content of entities) and
+// well_formed_dtd.cpp (the DOCTYPE and its declarations). The document's own elements are parsed
+// by xml/tree_parser.hpp, which builds the reader's tree in the same pass and hands the rare
+// constructs (comments, processing instructions, CDATA sections, references, names beyond ASCII)
+// to these productions.
 
 #include <cstdint>
 #include <cstring>
@@ -60,14 +63,15 @@ public:
     Scanner(Checker& checker, const std::string& text, const EntityScope* scope)
         : checker_(checker), begin_(text.data()), end_(text.data() + text.size()), p_(begin_), scope_(scope) {}
 
-    bool document();
-    bool walk();
+    // [22] prolog: the XML declaration, comments, processing instructions and the DOCTYPE, up to
+    // the '<' of the root element.
+    bool prolog();
     bool markup();
     bool entity_content();     // [43] content, balanced, nothing left over
     bool entity_attribute();   // no '<', references allowed in attribute values
     bool entity_declarations();  // a parameter entity used between declarations
 
-private:
+protected:
     // ---- basics --------------------------------------------------------------------------
     bool fail(const char* at, std::string message);
     bool at_end() const { return p_ >= end_; }
@@ -161,18 +165,13 @@ public:
         return std::move(fault_);
     }
 
-    std::optional<WellFormednessFault> run(const pugi::xml_document& parsed, const char* parse_buffer) {
-        Scanner scanner(*this, text_, nullptr);
-        scanner.document();
-        after_root(parsed, parse_buffer);
-        return std::move(fault_);
-    }
-
     // Keeps the fault nearest to the start of the text.
     bool fail(std::size_t offset, std::string message) {
         if (!fault_ || offset < fault_->offset) fault_ = WellFormednessFault{offset, std::move(message)};
         return false;
     }
+    [[nodiscard]] bool faulted() const { return fault_.has_value(); }
+    [[nodiscard]] const std::optional<WellFormednessFault>& fault() const { return fault_; }
 
     // WFC: Entity Declared. With an external subset or parameter-entity references that were not
     // followed, a declaration may be out of sight; then an undeclared name is a validity error,
@@ -186,14 +185,14 @@ public:
     const SourceEncoding encoding;  // what the decoder found (byte-order mark, UTF-16 shape, declaration)
     bool standalone = false;
     bool doctype_seen = false;
+    // Where the DOCTYPE is: from its '<' to after its '>' (offsets in the text).
+    std::size_t doctype_begin = 0;
+    std::size_t doctype_end = 0;
     int entity_depth = 0;
     std::vector<std::string_view> attributes;  // names in the current start tag
     std::unordered_set<std::string_view> attribute_set;  // the same, for tags with many attributes
 
 private:
-    // [1]: after the root element only comments, processing instructions and white space.
-    void after_root(const pugi::xml_document& parsed, const char* parse_buffer);
-
     const std::string& text_;
     std::optional<WellFormednessFault> fault_;
 };

@@ -2,7 +2,9 @@
 // The ESI XML front end: bytes -> typed model + diagnostics. Tolerant of what vendors ship
 // (BOM, UTF-16, ISO-8859-1/Windows-1252, #x and decimal numbers, 0x with a diagnostic,
 // 1/0/true/false, several Names, unknown elements kept verbatim). A file that is not well-formed
-// yields a single xml-syntax error at the position of the fault and no document.
+// XML 1.0 yields a single xml-syntax error at the position of the fault and no document.
+// Reading is one pass over the text, a device at a time: a catalogue's parsed XML is never in
+// memory as a whole, only the model read from it (docs/performance.md).
 
 #include <cstdint>
 #include <filesystem>
@@ -20,13 +22,6 @@ struct ReadOptions {
     bool keep_source = true;
     // Nesting depth beyond which unknown elements are not copied (guards against hostile input).
     std::size_t max_verbatim_depth = 256;
-    // From this size of (decoded) text on, the reader frees each Device, Module, Object and
-    // DataType of the parsed XML, with its part of the parse buffer, as soon as it is in the
-    // model, so that the parsed XML and the model do not peak together on a big catalogue
-    // (issue 10, docs/performance.md). Freeing walks the freed nodes once more and maps the
-    // parse buffer on pages of its own, which files whose whole peak is a few tens of MB need not
-    // pay for. The model read is the same either way.
-    std::size_t release_elements_from_bytes = std::size_t{8} << 20;
 };
 
 struct ReadResult {

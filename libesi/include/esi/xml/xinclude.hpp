@@ -14,7 +14,6 @@
 #include <pugixml.hpp>
 
 #include "esi/diagnostic.hpp"
-#include "esi/source_text.hpp"
 
 namespace esi {
 
@@ -22,10 +21,12 @@ namespace esi {
 // order. A text that does not name the namespace is not walked.
 [[nodiscard]] std::vector<pugi::xml_node> find_xinclude_elements(std::string_view text, const pugi::xml_node top);
 
-// What to say about one of them.
+// What to say about one of them: an element named `name` with this href, if it has one.
+[[nodiscard]] std::string describe_xinclude(std::string_view name, const std::string_view* href);
 [[nodiscard]] std::string describe_xinclude(const pugi::xml_node element);
 
-// xml-xinclude errors for the document `source` (parsed in place from a copy at `parse_buffer`).
-void report_xinclude(const SourceText& source, const pugi::xml_document& parsed, const char* parse_buffer, Diagnostics& diagnostics);
+// Whether a text may hold an XInclude element: one needs its namespace declared, so a text
+// without the word has none.
+[[nodiscard]] bool may_hold_xinclude(std::string_view text);
 
 }  // namespace esi

@@ -1,12 +1,12 @@
-// The reader frees each Device, Module, Object and DataType of the parsed XML, and its part of
-// the parse buffer, once it is in the model (ReadOptions::release_elements_from_bytes, issue 10).
-// That must not change what is read: the model (as written back), its positions and the reader's
-// and the rules' diagnostics are the same with and without releasing.
+// The reader reads a document a device at a time: the parser builds the elements of one Device
+// (or Module, or the Vendor, Groups, ...) and drops them once they are in the model (issue 25). That
+// must not change what is read: the model (as written back), its positions and the reader's and
+// the rules' diagnostics are those of reading each device from a document of its own, with the
+// positions moved by where that device stands in the catalogue.
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,17 +14,8 @@
 #include "esi/xml/reader.hpp"
 #include "esi/xml/writer.hpp"
 #include "support/test_support.hpp"
-#include "xml/parse_buffer.hpp"
 
 namespace {
-
-using esi::ReadOptions;
-
-ReadOptions releasing(bool on) {
-    ReadOptions options;
-    options.release_elements_from_bytes = on ? 0 : std::numeric_limits<std::size_t>::max();
-    return options;
-}
 
 std::string where(esi::SourcePos pos) { return std::to_string(pos.line) + ":" + std::to_string(pos.column); }
 
@@ -67,20 +58,6 @@ std::string diagnostics(const esi::Diagnostics& found) {
     return out;
 }
 
-// Reads `xml` both ways and expects the same model, positions and diagnostics.
-void expect_same_either_way(const std::string& xml, const std::string& path) {
-    const esi::ReadResult kept = esi::read_esi(xml, path, releasing(false));
-    const esi::ReadResult released = esi::read_esi(xml, path, releasing(true));
-    EXPECT_EQ(diagnostics(kept.diagnostics), diagnostics(released.diagnostics)) << path;
-    ASSERT_EQ(kept.document.has_value(), released.document.has_value()) << path;
-    if (!kept.document) return;
-    EXPECT_EQ(esi::write_esi(*kept.document), esi::write_esi(*released.document)) << path;
-    EXPECT_EQ(positions(*kept.document), positions(*released.document)) << path;
-    EXPECT_EQ(diagnostics(esi::run_rules(*kept.document, esi::EffectiveConfig{})),
-              diagnostics(esi::run_rules(*released.document, esi::EffectiveConfig{})))
-        << path;
-}
-
 // Devices and Objects of several pages each, with character data between them and unknown
 // elements after them, so that pages are given back right before what is still read.
 std::string big_catalogue() {
@@ -107,24 +84,51 @@ std::string big_catalogue() {
            "<VendorSpecific><Kept>text</Kept></VendorSpecific></Descriptions></EtherCATInfo>\n";
 }
 
-TEST(ReaderRelease, ReadsBigDevicesTheSameAsWithoutReleasing) {
+// The catalogue read as a whole and each device read from a document of its own, with the same
+// lines before it (so that positions agree): the same device, positions and findings.
+TEST(ReaderStreaming, EachDeviceReadsAsIfItStoodAlone) {
     const std::string xml = big_catalogue();
-    ASSERT_GT(xml.size(), 4u * 64 * 1024);  // many pages, whatever the page size
-    expect_same_either_way(xml, "big.xml");
-    const esi::ReadResult released = esi::read_esi(xml, "big.xml", releasing(true));
-    ASSERT_TRUE(released.document);
-    const auto& info = released.document->infos.at(0);
+    const esi::ReadResult whole = esi::read_esi(xml, "big.xml");
+    ASSERT_TRUE(whole.document);
+    const auto& info = whole.document->infos.at(0);
     ASSERT_EQ(info.devices.size(), 8u);
     EXPECT_EQ(info.devices[7].profiles.at(0).dictionary->objects.size(), 300u);
     EXPECT_EQ(info.devices[7].profiles.at(0).dictionary->objects[299].names.at(0).text, "Object & name 299");
     ASSERT_EQ(info.modules.size(), 2u);
     ASSERT_EQ(info.descriptions_extras.elements.size(), 1u);
     EXPECT_EQ(info.descriptions_extras.elements[0].after, "Modules");
+
+    std::size_t from = 0;
+    for (std::size_t d = 0; d < info.devices.size(); ++d) {
+        SCOPED_TRACE("device " + std::to_string(d));
+        from = xml.find("<Device ", from);
+        const std::size_t to = xml.find("</Device>", from) + 9;
+        // Everything before the device blanked to spaces (line feeds kept): the device keeps its line:column.
+        std::string alone = xml.substr(0, from);
+        for (char& c : alone)
+            if (c != '\n') c = ' ';
+        const std::string open = "<EtherCATInfo><Descriptions><Devices>";
+        const std::size_t room = alone.find(std::string(open.size(), ' '));
+        ASSERT_NE(room, std::string::npos);
+        alone.replace(room, open.size(), open);
+        alone += xml.substr(from, to - from) + "</Devices></Descriptions></EtherCATInfo>";
+        const esi::ReadResult single = esi::read_esi(alone, "big.xml");
+        ASSERT_TRUE(single.document);
+        const esi::Device& device = single.document->infos.at(0).devices.at(0);
+        EXPECT_EQ(device.pos, info.devices[d].pos);
+        esi::EsiDocument one;
+        one.infos.emplace_back().devices.push_back(info.devices[d]);
+        esi::EsiDocument other;
+        other.infos.emplace_back().devices.push_back(device);
+        EXPECT_EQ(esi::write_esi(one), esi::write_esi(other));
+        EXPECT_EQ(positions(one), positions(other));
+        from = to;
+    }
 }
 
-// pugixml frees a subtree recursively; a Device nesting elements a million deep must not
-// overflow the stack when it is released.
-TEST(ReaderRelease, ReleasesADeeplyNestedDeviceWithoutOverflowingTheStack) {
+// The parser drops a device's elements once it is read: a deeply nested device is taken apart
+// without recursion, and the device after it is read.
+TEST(ReaderStreaming, ReadsADeeplyNestedDeviceWithoutOverflowingTheStack) {
     const int depth = 1'000'000;
     std::string xml = "<?xml version=\"1.0\"?>\n<EtherCATInfo><Vendor><Id>1</Id><Name>V</Name></Vendor><Descriptions><Devices>"
                       "<Device><Type ProductCode=\"1\" RevisionNo=\"1\">D</Type><Name>D</Name><Deep>";
@@ -132,38 +136,24 @@ TEST(ReaderRelease, ReleasesADeeplyNestedDeviceWithoutOverflowingTheStack) {
     for (int i = 0; i < depth; ++i) xml += "</a>";
     xml += "</Deep></Device><Device><Type ProductCode=\"2\" RevisionNo=\"1\">E</Type><Name>E</Name></Device>"
            "</Devices></Descriptions></EtherCATInfo>\n";
-    const esi::ReadResult released = esi::read_esi(xml, "deep.xml", releasing(true));
-    ASSERT_TRUE(released.document);
-    ASSERT_EQ(released.document->infos.at(0).devices.size(), 2u);
-    EXPECT_EQ(released.document->infos.at(0).devices[1].names.at(0).text, "E");
+    const esi::ReadResult read = esi::read_esi(xml, "deep.xml");
+    ASSERT_TRUE(read.document);
+    ASSERT_EQ(read.document->infos.at(0).devices.size(), 2u);
+    EXPECT_EQ(read.document->infos.at(0).devices[1].names.at(0).text, "E");
 }
 
-TEST(ReaderRelease, ReadsTheCorpusTheSameAsWithoutReleasing) {
-    ESI_REQUIRE_CORPUS();
-    std::size_t files = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(esi::test::corpus_esi_dir())) {
-        if (entry.path().extension() != ".xml") continue;
-        expect_same_either_way(esi::test::read_text(entry.path()), entry.path().filename().string());
-        ++files;
-    }
-    EXPECT_GT(files, 50u);
-}
-
-TEST(ParseBuffer, GivesBackWholePagesInsideTheRangeOnly) {
-    const std::size_t size = 1 << 20;
-    const std::string text(size, 'x');
-    esi::xml_reader::ParseBuffer buffer(text, true);
-    ASSERT_EQ(buffer.view(), text);
-    buffer.give_back(100, size - 100);
-    // Bytes next to the range's ends, which are never on a page wholly inside it, are kept.
-    EXPECT_EQ(buffer.view().substr(0, 100), text.substr(0, 100));
-    EXPECT_EQ(buffer.view().substr(size - 100), text.substr(size - 100));
-#if defined(__linux__)
-    EXPECT_EQ(buffer.view()[size / 2], '\0');  // given back: reads as zero
-#endif
-    esi::xml_reader::ParseBuffer on_heap(text, false);
-    on_heap.give_back(0, size);
-    EXPECT_EQ(on_heap.view(), text);
+// A fault after a device that was read already: no document, the xml-syntax error alone (what the
+// reader found in the devices before it is dropped).
+TEST(ReaderStreaming, AFaultAfterTheFirstDevicesLeavesTheSyntaxErrorAlone) {
+    std::string xml = big_catalogue();
+    const std::size_t last = xml.rfind("</Devices>");
+    xml.insert(last, "<Device><Type ProductCode=\"0x5\">X</Type></Devce>");
+    const esi::ReadResult read = esi::read_esi(xml, "big.xml");
+    EXPECT_FALSE(read.document);
+    ASSERT_EQ(read.diagnostics.size(), 1u) << diagnostics(read.diagnostics);
+    EXPECT_EQ(read.diagnostics.items()[0].rule, "xml-syntax");
+    EXPECT_NE(read.diagnostics.items()[0].message.find("end tag 'Devce' does not match the start tag 'Device'"), std::string::npos)
+        << read.diagnostics.items()[0].message;
 }
 
 }  // namespace

@@ -1,0 +1,164 @@
+#pragma once
+// The element tree the ESI reader reads: what xml/tree_parser.hpp built in its one pass over the
+// text, kept in flat arrays. Names, and every value that needed no decoding, are views into the
+// text itself (so a value's offset in the file is where it points); values that did (a reference,
+// a carriage return, a tab in an attribute) are decoded into the tree's own store. Each element
+// carries the line:column of its '<', computed during the pass.
+//
+// The tree mirrors what pugixml builds with the reader's former options (parse_default |
+// parse_embed_pcdata), which tests/unit/element_tree_test.cpp checks against pugixml itself:
+// comments and processing instructions are not kept; character data that is only white space is
+// dropped; the first other character data of an element with no child yet is the element's own
+// value, later runs are pcdata children; CDATA sections are cdata children; "\r\n" and "\r" read
+// as "\n"; an attribute value reads tabs and line breaks as spaces; the five predefined entities
+// and character references are replaced, other references stay as written.
+//
+// Elements are streamed a subtree at a time (TreeParser::stream_children): a mark taken before a
+// child is read lets the tree drop the child again once the reader has it in the model, so that a
+// catalogue of a thousand devices never has more than one device's elements in memory.
+
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "esi/source_pos.hpp"
+
+namespace esi::xml_tree {
+
+enum class NodeKind : std::uint8_t { element, pcdata, cdata };
+
+struct Attribute {
+    std::string_view name;
+    std::string_view value;
+};
+
+struct Node {
+    std::string_view name;   // elements only
+    std::string_view value;  // an element's own text (see above); the text of pcdata and cdata
+    std::uint32_t parent = 0;  // 0: none (index 0 is no node)
+    std::uint32_t first_child = 0;
+    std::uint32_t next_sibling = 0;
+    std::uint32_t first_attribute = 0;
+    std::uint32_t attribute_count = 0;
+    std::uint32_t offset = 0;  // of the '<' of an element, or of the first byte of character data
+    SourcePos pos;             // of the '<'
+    NodeKind kind = NodeKind::element;
+    bool has_value = false;  // an element's own text was set (pugixml's "value is not null")
+    bool complete = false;   // read up to its end tag
+};
+
+class Tree;
+
+// A handle to an element (or a character-data node) of a Tree; false when it names none. Valid
+// until the tree is truncated before it.
+class Element {
+public:
+    Element() = default;
+    Element(const Tree* tree, std::uint32_t index) : tree_(tree), index_(index) {}
+
+    explicit operator bool() const { return index_ != 0; }
+    [[nodiscard]] std::uint32_t index() const { return index_; }
+    friend bool operator==(const Element& a, const Element& b) { return a.index_ == b.index_ && a.tree_ == b.tree_; }
+
+    [[nodiscard]] const Node& node() const;
+    [[nodiscard]] NodeKind kind() const { return node().kind; }
+    [[nodiscard]] std::string_view name() const { return node().name; }
+    [[nodiscard]] std::string_view value() const { return node().value; }
+    [[nodiscard]] SourcePos pos() const { return node().pos; }
+    [[nodiscard]] std::size_t offset() const { return node().offset; }
+
+    [[nodiscard]] Element parent() const { return {tree_, node().parent}; }
+    [[nodiscard]] Element first_child() const { return {tree_, node().first_child}; }
+    [[nodiscard]] Element next_sibling() const { return {tree_, node().next_sibling}; }
+    // The first child element named `name`, and the next sibling element of that name.
+    [[nodiscard]] Element child(std::string_view child_name) const;
+    [[nodiscard]] Element next_sibling(std::string_view sibling_name) const;
+
+    [[nodiscard]] std::span<const Attribute> attributes() const;
+    [[nodiscard]] const Attribute* attribute(std::string_view attribute_name) const;
+
+    // The element's character data as pugixml's text() gave it: its own text, or else the first
+    // pcdata or cdata child's (text after a child element or a CDATA section).
+    [[nodiscard]] std::string_view text() const;
+
+private:
+    const Tree* tree_ = nullptr;
+    std::uint32_t index_ = 0;
+};
+
+class Tree {
+public:
+    Tree() { nodes_.emplace_back(); }  // index 0 stands for "none"
+
+    [[nodiscard]] Element element(std::uint32_t index) const { return {this, index}; }
+    [[nodiscard]] const Node& node(std::uint32_t index) const { return nodes_[index]; }
+    [[nodiscard]] Node& node(std::uint32_t index) { return nodes_[index]; }
+    [[nodiscard]] std::span<const Attribute> attributes_of(const Node& n) const {
+        return {attributes_.data() + n.first_attribute, n.attribute_count};
+    }
+
+    // Everything added after a mark is dropped again by truncate(mark).
+    struct Mark {
+        std::size_t nodes = 0;
+        std::size_t attributes = 0;
+        std::size_t decoded = 0;
+    };
+    [[nodiscard]] Mark mark() const { return {nodes_.size(), attributes_.size(), decoded_.size()}; }
+    void truncate(const Mark& m) {
+        nodes_.resize(m.nodes);
+        attributes_.resize(m.attributes);
+        decoded_.resize(m.decoded);
+    }
+
+    // For the parser.
+    void reserve(std::size_t nodes) { nodes_.reserve(nodes); }
+    std::uint32_t add_node() {
+        nodes_.emplace_back();
+        return static_cast<std::uint32_t>(nodes_.size() - 1);
+    }
+    std::vector<Attribute>& attributes() { return attributes_; }
+    // Keeps a decoded value; the view stays valid until a truncate() before it.
+    std::string_view keep(std::string&& decoded) { return decoded_.emplace_back(std::move(decoded)); }
+    [[nodiscard]] std::size_t node_count() const { return nodes_.size() - 1; }
+
+private:
+    std::vector<Node> nodes_;
+    std::vector<Attribute> attributes_;
+    std::deque<std::string> decoded_;  // a deque: growing it moves no string, so views stay valid
+};
+
+inline const Node& Element::node() const { return tree_->node(index_); }
+
+inline std::span<const Attribute> Element::attributes() const { return tree_->attributes_of(node()); }
+
+inline const Attribute* Element::attribute(std::string_view attribute_name) const {
+    for (const Attribute& a : attributes())
+        if (a.name == attribute_name) return &a;
+    return nullptr;
+}
+
+inline Element Element::child(std::string_view child_name) const {
+    for (Element c = first_child(); c; c = c.next_sibling())
+        if (c.kind() == NodeKind::element && c.name() == child_name) return c;
+    return {};
+}
+
+inline Element Element::next_sibling(std::string_view sibling_name) const {
+    for (Element c = next_sibling(); c; c = c.next_sibling())
+        if (c.kind() == NodeKind::element && c.name() == sibling_name) return c;
+    return {};
+}
+
+inline std::string_view Element::text() const {
+    const Node& n = node();
+    if (n.has_value) return n.value;
+    for (Element c = first_child(); c; c = c.next_sibling())
+        if (c.kind() != NodeKind::element) return c.value();
+    return {};
+}
+
+}  // namespace esi::xml_tree
