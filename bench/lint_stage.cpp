@@ -36,7 +36,9 @@ int main(int argc, char** argv) {
         inputs.emplace_back(argv[i], std::move(*bytes));
     }
     std::size_t count = 0;
-    for (const auto& [path, bytes] : inputs) {
+    // Each input is used once; lint and read take it over as esi-lint takes over the bytes of a file
+    // it read (the bare parse copies it, as pugixml's load_buffer does).
+    for (auto& [path, bytes] : inputs) {
         if (stage == "bare") {
             pugi::xml_document doc;
             const auto parsed = doc.load_buffer(bytes.data(), bytes.size(), pugi::parse_default | pugi::parse_embed_pcdata,
@@ -46,10 +48,10 @@ int main(int argc, char** argv) {
             const esi::DecodedText decoded = esi::decode_xml_bytes(bytes);
             count += esi::find_well_formedness_fault(decoded.utf8, decoded.encoding) ? 0 : 1;
         } else if (stage == "read") {
-            const esi::ReadResult read = esi::read_esi(bytes, path);
+            const esi::ReadResult read = esi::read_esi_owned(std::move(bytes), path);
             count += read.document ? read.document->infos.size() : 0;
         } else {
-            count += esi::lint_bytes(bytes, path, {}).diagnostics.size();
+            count += esi::lint_bytes(std::move(bytes), path, {}).diagnostics.size();
         }
     }
     std::printf("%s: %zu files, result %zu\n", stage.c_str(), inputs.size(), count);

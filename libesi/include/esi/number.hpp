@@ -3,6 +3,7 @@
 // not valid ESI but is accepted with a diagnostic because real files contain it.
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -19,8 +20,21 @@ struct Number {
     }
     [[nodiscard]] static constexpr Number from_unsigned(std::uint64_t v) { return Number{v, false}; }
 
-    [[nodiscard]] std::optional<std::int64_t> as_int64() const;
-    [[nodiscard]] std::optional<std::uint64_t> as_uint64() const;
+    // Inline: the reader converts every number it reads.
+    [[nodiscard]] std::optional<std::int64_t> as_int64() const {
+        constexpr auto max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+        if (!negative) {
+            if (magnitude > max) return std::nullopt;
+            return static_cast<std::int64_t>(magnitude);
+        }
+        if (magnitude > max + 1u) return std::nullopt;
+        if (magnitude == max + 1u) return std::numeric_limits<std::int64_t>::min();
+        return -static_cast<std::int64_t>(magnitude);
+    }
+    [[nodiscard]] std::optional<std::uint64_t> as_uint64() const {
+        if (negative && magnitude != 0) return std::nullopt;
+        return magnitude;
+    }
     // Two's-complement bit pattern truncated to 64 bits (what goes on the wire).
     [[nodiscard]] std::uint64_t bits() const { return negative ? (~magnitude + 1u) : magnitude; }
     [[nodiscard]] bool fits_signed_bits(unsigned bits) const;

@@ -1,5 +1,9 @@
 #include "esi/encoding.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -171,8 +175,18 @@ bool is_valid_utf8(std::string_view text, std::size_t* first_bad) {
     const std::size_t n = text.size();
     std::size_t i = 0;
     while (i < n) {
-        // Fast path over ASCII, sixteen bytes (two words tested at once) at a time: every UTF-8
-        // file is validated whole before parsing, and the loop overhead was half the cost.
+        // Fast path over ASCII: every UTF-8 file is validated whole before parsing, and the loop
+        // overhead was half the cost. 64 bytes a step with SSE2 (four blocks ORed, one test), else
+        // sixteen (two words tested at once).
+#if defined(__SSE2__)
+        while (i + 64 <= n) {
+            const auto* q = reinterpret_cast<const __m128i*>(p + i);
+            const __m128i any = _mm_or_si128(_mm_or_si128(_mm_loadu_si128(q), _mm_loadu_si128(q + 1)),
+                                             _mm_or_si128(_mm_loadu_si128(q + 2), _mm_loadu_si128(q + 3)));
+            if (_mm_movemask_epi8(any) != 0) break;
+            i += 64;
+        }
+#endif
         while (i + 16 <= n) {
             std::uint64_t first = 0;
             std::uint64_t second = 0;

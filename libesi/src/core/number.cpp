@@ -1,24 +1,9 @@
 #include "esi/number.hpp"
 
+#include <array>
 #include <limits>
 
 namespace esi {
-
-std::optional<std::int64_t> Number::as_int64() const {
-    constexpr auto max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
-    if (!negative) {
-        if (magnitude > max) return std::nullopt;
-        return static_cast<std::int64_t>(magnitude);
-    }
-    if (magnitude > max + 1u) return std::nullopt;
-    if (magnitude == max + 1u) return std::numeric_limits<std::int64_t>::min();
-    return -static_cast<std::int64_t>(magnitude);
-}
-
-std::optional<std::uint64_t> Number::as_uint64() const {
-    if (negative && magnitude != 0) return std::nullopt;
-    return magnitude;
-}
 
 bool Number::fits_signed_bits(unsigned bits) const {
     if (bits == 0) return false;
@@ -34,12 +19,19 @@ bool Number::fits_unsigned_bits(unsigned bits) const {
 }
 
 namespace {
-int hex_digit(char c) {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
+
+// The value of a hex digit, 0xFF for a byte that is none: one lookup per digit, and a decimal
+// digit is one whose value is below 10.
+constexpr std::array<std::uint8_t, 256> make_digit_values() {
+    std::array<std::uint8_t, 256> values{};
+    for (auto& v : values) v = 0xFF;
+    for (int c = '0'; c <= '9'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - '0');
+    for (int c = 'a'; c <= 'f'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'a' + 10);
+    for (int c = 'A'; c <= 'F'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'A' + 10);
+    return values;
 }
+constexpr std::array<std::uint8_t, 256> digit_values = make_digit_values();
+
 }  // namespace
 
 ParsedNumber parse_number(std::string_view text) {
@@ -74,18 +66,21 @@ ParsedNumber parse_number(std::string_view text) {
     constexpr std::uint64_t max = std::numeric_limits<std::uint64_t>::max();
     const std::uint64_t limit = base == 16 ? max / 16 : max / 10;
     const unsigned last_digit = base == 16 ? static_cast<unsigned>(max % 16) : static_cast<unsigned>(max % 10);
+    // Up to 15 hex or 19 decimal digits cannot overflow: nearly every number of a file is read
+    // without the test per digit.
+    const bool may_overflow = text.size() > (base == 16 ? 15u : 19u);
     std::uint64_t value = 0;
     for (char c : text) {
-        const int digit = base == 16 ? hex_digit(c) : (c >= '0' && c <= '9' ? c - '0' : -1);
-        if (digit < 0) {
+        const unsigned digit = digit_values[static_cast<unsigned char>(c)];
+        if (digit >= base) {
             result.error = NumberError::bad_digit;
             return result;
         }
-        if (value > limit || (value == limit && static_cast<unsigned>(digit) > last_digit)) {
+        if (may_overflow && (value > limit || (value == limit && digit > last_digit))) {
             result.error = NumberError::overflow;
             return result;
         }
-        value = value * base + static_cast<unsigned>(digit);
+        value = value * base + digit;
     }
     result.value = Number{value, negative && value != 0};
     return result;

@@ -85,6 +85,11 @@ LintInput read_input_bytes(std::string_view bytes, const std::string& path) {
     return from_xml(read_esi(bytes, path));
 }
 
+LintInput read_input_bytes(std::string&& bytes, const std::string& path) {
+    if (document_format(bytes, path) == DocumentFormat::yaml_source) return from_yaml(load_device_source(bytes, path));
+    return from_xml(read_esi_owned(std::move(bytes), path));
+}
+
 FileReport lint_input(LintInput read, const std::string& path, const EffectiveConfig& config, const SchemaSet* schemas) {
     FileReport report;
     report.path = path;
@@ -131,15 +136,30 @@ std::optional<std::string> foreign_file(const LintInput& read) {
 
 }  // namespace
 
-FileReport lint_bytes(std::string_view bytes, const std::string& path, const EffectiveConfig& config,
-                      const std::optional<std::filesystem::path>& xsd_dir) {
+namespace {
+
+template <class Bytes>
+FileReport lint_input_bytes(Bytes&& bytes, const std::string& path, const EffectiveConfig& config,
+                            const std::optional<std::filesystem::path>& xsd_dir) {
     std::shared_ptr<SchemaSet> schemas;
     Diagnostics schema_diagnostics;
     if (xsd_dir) schemas = SchemaSet::load(*xsd_dir, schema_diagnostics);
-    FileReport report = lint_input(read_input_bytes(bytes, path), path, config, schemas.get());
+    FileReport report = lint_input(read_input_bytes(std::forward<Bytes>(bytes), path), path, config, schemas.get());
     report.diagnostics.append(std::move(schema_diagnostics));
     report.diagnostics.sort();
     return report;
+}
+
+}  // namespace
+
+FileReport lint_bytes(std::string_view bytes, const std::string& path, const EffectiveConfig& config,
+                      const std::optional<std::filesystem::path>& xsd_dir) {
+    return lint_input_bytes(bytes, path, config, xsd_dir);
+}
+
+FileReport lint_bytes(std::string&& bytes, const std::string& path, const EffectiveConfig& config,
+                      const std::optional<std::filesystem::path>& xsd_dir) {
+    return lint_input_bytes(std::move(bytes), path, config, xsd_dir);
 }
 
 namespace {

@@ -66,9 +66,9 @@ void Reader::verbatim(XmlElement& e, const Element n, std::string_view after, st
 bool Reader::read_image(Images& images, const Element c, std::string_view name) {
     if (is(name, "ImageData16x14")) images.image_data16x14 = hex(c);
     else if (is(name, "Image16x14")) {
-        images.image16x14 = text_of(c);
+        text(images.image16x14, c);
         images.image16x14_pos = pos_of(c);
-    } else if (is(name, "ImageFile16x14")) images.image_file16x14 = text_of(c);
+    } else if (is(name, "ImageFile16x14")) text(images.image_file16x14, c);
     else return false;
     return true;
 }
@@ -184,10 +184,10 @@ void Reader::read_vendor(Vendor& v, const Element n) {
         if (is(name, "Id")) {
             v.id = u32(c);
             v.id_pos = pos_of(c);
-        } else if (is(name, "Name")) v.names.push_back(localized(c));
-        else if (is(name, "Comment")) v.comments.push_back(localized(c));
-        else if (is(name, "URL")) v.urls.push_back(localized(c));
-        else if (is(name, "DescriptionURL")) v.description_url = text_of(c);
+        } else if (is(name, "Name")) localized(v.names, c);
+        else if (is(name, "Comment")) localized(v.comments, c);
+        else if (is(name, "URL")) localized(v.urls, c);
+        else if (is(name, "DescriptionURL")) text(v.description_url, c);
         else if (!read_image(v.images, c, name)) keep(v.extras, c, previous);
     });
 }
@@ -202,10 +202,10 @@ void Reader::read_group(Group& g, const Element n) {
     }
     for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Type")) {
-            g.type = text_of(c);
+            text(g.type, c);
             g.type_pos = pos_of(c);
-        } else if (is(name, "Name")) g.names.push_back(localized(c));
-        else if (is(name, "Comment")) g.comments.push_back(localized(c));
+        } else if (is(name, "Name")) localized(g.names, c);
+        else if (is(name, "Comment")) localized(g.comments, c);
         else if (!read_image(g.images, c, name)) keep(g.extras, c, previous);
     });
 }

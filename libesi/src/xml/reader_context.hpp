@@ -9,6 +9,7 @@
 // a file.
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cctype>
 #include <cstring>
@@ -34,6 +35,17 @@ using Attr = xml_tree::Attribute;
 // compares the length, then a memcmp whose length is known at compile time, which the compiler
 // turns into a load or two, where string_view's operator== is an out-of-line call plus a memcmp
 // call. (always_inline: GCC otherwise keeps some instances out of line, a call per compare.)
+// The value of a hex digit, 0xFF for a byte that is none.
+constexpr std::array<std::uint8_t, 256> make_digit_values() {
+    std::array<std::uint8_t, 256> values{};
+    for (auto& v : values) v = 0xFF;
+    for (int c = '0'; c <= '9'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - '0');
+    for (int c = 'a'; c <= 'f'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'a' + 10);
+    for (int c = 'A'; c <= 'F'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'A' + 10);
+    return values;
+}
+inline constexpr std::array<std::uint8_t, 256> digit_values = make_digit_values();
+
 template <std::size_t N>
 [[gnu::always_inline]] inline bool is(std::string_view name, const char (&literal)[N]) {
     return name.size() == N - 1 && std::memcmp(name.data(), literal, N - 1) == 0;
@@ -92,6 +104,12 @@ private:
     // An element's character data: its own text, or the first text after a child or a CDATA section.
     static std::string_view pcdata(const Element n) { return n.text(); }
     static std::string text_of(const Element node) { return std::string(trim(pcdata(node))); }
+    // The same into a field, in place (no temporary string moved in).
+    static void text(std::string& field, const Element node) {
+        const std::string_view t = trim(pcdata(node));
+        field.assign(t.data(), t.size());
+    }
+    static void text(std::optional<std::string>& field, const Element node) { field.emplace(trim(pcdata(node))); }
 
     // Where a scalar was read from: named ("Sm@StartAddress", or the element's name) and located
     // only when the value is bad, so that a good value costs no string allocation and no
@@ -107,7 +125,36 @@ private:
         return std::string(site.element.name());
     }
 
+    // Nearly every number of a file is plain decimal or #x hex digits, few enough not to overflow
+    // (16 at most), without sign or blanks: read here, inline; everything else (and every fault)
+    // goes through parse_number and is reported by checked_number().
+    static bool plain_number(std::string_view text, std::uint64_t& value) {
+        if (text.empty() || text.size() > 16) return false;
+        const char* p = text.data();
+        const char* const end = p + text.size();
+        std::uint64_t v = 0;
+        if (p[0] == '#' && text.size() > 2 && p[1] == 'x') {
+            for (p += 2; p < end; ++p) {
+                const unsigned digit = digit_values[static_cast<unsigned char>(*p)];
+                if (digit > 15) return false;
+                v = v * 16 + digit;
+            }
+        } else {
+            for (; p < end; ++p) {
+                const unsigned digit = static_cast<unsigned char>(*p) - unsigned{'0'};
+                if (digit > 9) return false;
+                v = v * 10 + digit;
+            }
+        }
+        value = v;
+        return true;
+    }
     std::optional<Number> number(std::string_view text, const ValueSite& site) {
+        std::uint64_t value = 0;
+        if (plain_number(text, value)) return Number{value, false};
+        return checked_number(text, site);
+    }
+    [[gnu::noinline]] std::optional<Number> checked_number(std::string_view text, const ValueSite& site) {
         const ParsedNumber parsed = parse_number(text);
         if (!parsed.ok()) {
             report(Severity::error, "xml-number-format",
@@ -189,14 +236,14 @@ private:
         return out;
     }
 
-    LocalizedText localized(const Element n) {
-        LocalizedText t;
-        t.text = text_of(n);
+    // A Name, Comment, URL ... with its LcId, appended to `texts`.
+    void localized(Names& texts, const Element n) {
+        LocalizedText& t = texts.emplace_back();
+        text(t.text, n);
         t.pos = pos_of(n);
         for (const Attr& a : n.attributes()) {
             if (is(a.name, "LcId")) t.lcid = integer<std::uint32_t>(a.value, ValueSite{n, &a, "LcId"});
         }
-        return t;
     }
 
     // DependOnSlot and DependOnSlotGroup of an Index or Exclude element (ETG.2000 Slots: the

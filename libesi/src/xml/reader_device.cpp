@@ -7,7 +7,7 @@ namespace esi::xml_reader {
 
 void Reader::read_identity(DeviceIdentity& t, const Element n) {
     t.pos = pos_of(n);
-    t.text = text_of(n);
+    text(t.text, n);
     for (const Attr& a : n.attributes()) {
         const std::string_view an = a.name;
         if (is(an, "ProductCode")) t.product_code = u32(a, n);
@@ -33,11 +33,11 @@ void Reader::read_device(Device& d, const Element n) {
             if (has_type) d.type = {};  // a repeated Type replaces the first
             read_identity(d.type, c);
             has_type = true;
-        } else if (is(name, "Name")) d.names.push_back(localized(c));
-        else if (is(name, "Comment")) d.comments.push_back(localized(c));
-        else if (is(name, "URL")) d.urls.push_back(localized(c));
+        } else if (is(name, "Name")) localized(d.names, c);
+        else if (is(name, "Comment")) localized(d.comments, c);
+        else if (is(name, "URL")) localized(d.urls, c);
         else if (is(name, "GroupType")) {
-            d.group_type = text_of(c);
+            text(d.group_type, c);
             d.group_type_pos = pos_of(c);
         } else if (is(name, "Profile")) read_profile(d.profiles.emplace_back(), c);
         else if (is(name, "Fmmu")) read_fmmu(d.fmmus.emplace_back(), c);
@@ -56,7 +56,7 @@ void Reader::read_device(Device& d, const Element n) {
 
 void Reader::read_sm(SyncManager& sm, const Element n) {
     sm.pos = pos_of(n);
-    sm.type = text_of(n);
+    text(sm.type, n);
     for (const Attr& a : n.attributes()) {
         const std::string_view an = a.name;
         if (is(an, "StartAddress")) sm.start_address = u32(a, n);
@@ -77,7 +77,7 @@ void Reader::read_sm(SyncManager& sm, const Element n) {
 
 void Reader::read_fmmu(Fmmu& f, const Element n) {
     f.pos = pos_of(n);
-    f.type = text_of(n);
+    text(f.type, n);
     for (const Attr& a : n.attributes()) {
         const std::string_view an = a.name;
         if (is(an, "Sm")) f.sm = u32(a, n);
@@ -90,7 +90,7 @@ void Reader::read_fmmu(Fmmu& f, const Element n) {
 
 void Reader::read_su(SyncUnit& s, const Element n) {
     s.pos = pos_of(n);
-    s.text = text_of(n);
+    text(s.text, n);
     for (const Attr& a : n.attributes()) {
         const std::string_view an = a.name;
         if (is(an, "SeparateSu")) s.separate_su = boolean(a, n);
@@ -133,7 +133,7 @@ void Reader::read_pdo(Pdo& p, const Element n, PdoDirection direction) {
             p.index = index.value_or(0);
             p.index_invalid = !index;
             depend_on_slot(c, p.index_depend_on_slot, p.index_depend_on_slot_group);
-        } else if (is(name, "Name")) p.names.push_back(localized(c));
+        } else if (is(name, "Name")) localized(p.names, c);
         else if (is(name, "Exclude")) {
             PdoExclude e;
             e.pos = pos_of(c);
@@ -171,10 +171,10 @@ void Reader::read_entry(PdoEntry& e, const Element n) {
             has_bit_len = true;
             e.bit_len = u32(c).value_or(0);
             e.bit_len_pos = pos_of(c);
-        } else if (is(name, "Name")) e.names.push_back(localized(c));
-        else if (is(name, "Comment")) e.comment = text_of(c);
+        } else if (is(name, "Name")) localized(e.names, c);
+        else if (is(name, "Comment")) text(e.comment, c);
         else if (is(name, "DataType")) {
-            e.data_type = text_of(c);
+            text(e.data_type, c);
             e.data_type_pos = pos_of(c);
             for (const Attr& a : c.attributes()) {
                 const std::string_view an = a.name;
@@ -205,8 +205,8 @@ void Reader::read_op_mode(DcOpMode& m, const Element n) {
     m.pos = pos_of(n);
     for (const Attr& a : n.attributes()) keep(m.extras, a);
     for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
-        if (is(name, "Name")) m.name = text_of(c);
-        else if (is(name, "Desc")) m.desc = text_of(c);
+        if (is(name, "Name")) text(m.name, c);
+        else if (is(name, "Desc")) text(m.desc, c);
         else if (is(name, "AssignActivate")) {
             m.assign_activate_pos = pos_of(c);
             if (auto v = u32(c)) {

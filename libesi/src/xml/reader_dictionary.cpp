@@ -14,7 +14,7 @@ void Reader::read_profile(Profile& p, const Element n) {
     for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "ProfileNo")) p.profile_no = i32(c);
         else if (is(name, "AddInfo")) p.add_info = i32(c);
-        else if (is(name, "DictionaryFile")) p.dictionary_file = text_of(c);
+        else if (is(name, "DictionaryFile")) text(p.dictionary_file, c);
         else if (is(name, "Dictionary")) read_dictionary(p.dictionary.emplace(), c);
         else keep(p.extras, c, previous);
     });
@@ -49,10 +49,10 @@ void Reader::read_data_type(DataType& t, const Element n) {
     for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Index")) t.index = u32(c);
         else if (is(name, "Name")) {
-            t.name = text_of(c);
+            text(t.name, c);
             t.name_pos = pos_of(c);
-        } else if (is(name, "BaseType")) t.base_type = text_of(c);
-        else if (is(name, "Comment")) t.comments.push_back(localized(c));
+        } else if (is(name, "BaseType")) text(t.base_type, c);
+        else if (is(name, "Comment")) localized(t.comments, c);
         else if (is(name, "BitSize")) t.bit_size = u64(c).value_or(0);
         else if (is(name, "ArrayInfo")) {
             ArrayInfo ai;
@@ -67,9 +67,9 @@ void Reader::read_data_type(DataType& t, const Element n) {
             EnumValue ev;
             ev.pos = pos_of(c);
             for_children(c, [&](const Element cc, std::string_view cn, std::string_view) {
-                if (is(cn, "Text")) ev.texts.push_back(localized(cc));
+                if (is(cn, "Text")) localized(ev.texts, cc);
                 else if (is(cn, "Enum")) ev.value = number(cc).value_or(Number{});
-                else if (is(cn, "Comment")) ev.comments.push_back(localized(cc));
+                else if (is(cn, "Comment")) localized(ev.comments, cc);
             });
             t.enums.push_back(std::move(ev));
         } else keep(t.extras, c, previous);
@@ -81,10 +81,10 @@ void Reader::read_type_sub_item(DataTypeSubItem& s, const Element n) {
     for (const Attr& a : n.attributes()) keep(s.extras, a);
     for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "SubIdx")) s.subindex = u32(c);
-        else if (is(name, "Name")) s.name = text_of(c);
-        else if (is(name, "DisplayName")) s.display_names.push_back(localized(c));
-        else if (is(name, "Type")) s.type = text_of(c);
-        else if (is(name, "Comment")) s.comments.push_back(localized(c));
+        else if (is(name, "Name")) text(s.name, c);
+        else if (is(name, "DisplayName")) localized(s.display_names, c);
+        else if (is(name, "Type")) text(s.type, c);
+        else if (is(name, "Comment")) localized(s.comments, c);
         else if (is(name, "BitSize")) s.bit_size = u64(c).value_or(0);
         else if (is(name, "BitOffs")) s.bit_offset = u64(c).value_or(0);
         else if (is(name, "DefaultString")) s.default_string = pcdata(c);
@@ -102,18 +102,18 @@ void Reader::read_flags(ObjectFlags& f, const Element n) {
     for (const Attr& a : n.attributes()) keep(f.extras, a);
     for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Access")) {
-            f.access = text_of(c);
+            text(f.access, c);
             for (const Attr& a : c.attributes()) {
                 const std::string_view an = a.name;
                 if (is(an, "ReadRestrictions")) f.access_read_restrictions = a.value;
                 else if (is(an, "WriteRestrictions")) f.access_write_restrictions = a.value;
             }
-        } else if (is(name, "Category")) f.category = text_of(c);
-        else if (is(name, "PdoMapping")) f.pdo_mapping = text_of(c);
-        else if (is(name, "SafetyMapping")) f.safety_mapping = text_of(c);
+        } else if (is(name, "Category")) text(f.category, c);
+        else if (is(name, "PdoMapping")) text(f.pdo_mapping, c);
+        else if (is(name, "SafetyMapping")) text(f.safety_mapping, c);
         else if (is(name, "Attribute")) f.attribute = u32(c);
-        else if (is(name, "Transition")) f.transition = text_of(c);
-        else if (is(name, "SdoAccess")) f.sdo_access = text_of(c);
+        else if (is(name, "Transition")) text(f.transition, c);
+        else if (is(name, "SdoAccess")) text(f.sdo_access, c);
         else if (is(name, "Backup")) f.backup = i32(c);
         else if (is(name, "Setting")) f.setting = i32(c);
         else keep(f.extras, c, previous);
@@ -134,14 +134,14 @@ void Reader::read_object_info(ObjectInfo& info, const Element n, std::size_t dep
         else if (is(name, "MinValue")) info.min_value = number(c);
         else if (is(name, "MaxValue")) info.max_value = number(c);
         else if (is(name, "DefaultValue")) info.default_value = number(c);
-        else if (is(name, "DisplayName")) info.display_name = text_of(c);
+        else if (is(name, "DisplayName")) text(info.display_name, c);
         else if (is(name, "Unit")) info.unit = u32(c);
         else if (is(name, "SubItem") && depth < 8) {
             ObjectSubItemInfo& sub = info.sub_items.emplace_back();
             sub.pos = pos_of(c);
             bool has_info = false;
             for_children(c, [&](const Element cc, std::string_view cn, std::string_view prev) {
-                if (is(cn, "Name")) sub.name = text_of(cc);
+                if (is(cn, "Name")) text(sub.name, cc);
                 else if (is(cn, "Info")) {
                     if (has_info) sub.info = {};  // a repeated Info replaces the first
                     read_object_info(sub.info, cc, depth + 1);
@@ -164,10 +164,10 @@ void Reader::read_object(Object& o, const Element n) {
             depend_on_slot(c, o.index_depend_on_slot, o.index_depend_on_slot_group, [&](const Attr& a) {
                 if (is(a.name, "OverwrittenByModule")) o.index_overwritten_by_module = boolean(a, c);
             });
-        } else if (is(name, "Name")) o.names.push_back(localized(c));
-        else if (is(name, "Comment")) o.comments.push_back(localized(c));
+        } else if (is(name, "Name")) localized(o.names, c);
+        else if (is(name, "Comment")) localized(o.comments, c);
         else if (is(name, "Type")) {
-            o.type = text_of(c);
+            text(o.type, c);
             o.type_pos = pos_of(c);
         } else if (is(name, "BitSize")) {
             o.bit_size = u64(c).value_or(0);

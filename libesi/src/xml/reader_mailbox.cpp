@@ -35,7 +35,7 @@ void Reader::read_init_cmd(InitCmd& cmd, const Element n) {
             cmd.has_data = true;
             for (const Attr& a : c.attributes())
                 if (is(a.name, "AdaptAutomatically")) cmd.data_adapt_automatically = boolean(a, c);
-        } else if (is(name, "Comment")) cmd.comment = text_of(c);
+        } else if (is(name, "Comment")) text(cmd.comment, c);
         else keep(cmd.extras, c, previous);
     });
 }

@@ -10,7 +10,7 @@ void Reader::read_module(Module& m, const Element n) {
     for (const Attr& a : n.attributes()) keep(m.extras, a);
     for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
         if (is(name, "Type")) {
-            m.type = text_of(c);
+            text(m.type, c);
             m.type_pos = pos_of(c);
             for (const Attr& a : c.attributes()) {
                 const std::string_view an = a.name;
@@ -19,12 +19,12 @@ void Reader::read_module(Module& m, const Element n) {
                 else if (is(an, "ModulePdoGroup")) m.module_pdo_group = i32(a, c);
                 else keep(m.type_extras, a);
             }
-        } else if (is(name, "Name")) m.names.push_back(localized(c));
+        } else if (is(name, "Name")) localized(m.names, c);
         else if (is(name, "RxPdo")) read_pdo(m.rx_pdos.emplace_back(), c, PdoDirection::rx);
         else if (is(name, "TxPdo")) read_pdo(m.tx_pdos.emplace_back(), c, PdoDirection::tx);
         else if (is(name, "Mailbox")) read_mailbox(m.mailbox.emplace(), c);
         else if (is(name, "Profile")) read_profile(m.profile.emplace(), c);
-        else if (is(name, "DcOpModeName")) m.dc_op_mode_name = text_of(c);
+        else if (is(name, "DcOpModeName")) text(m.dc_op_mode_name, c);
         else if (!read_image(m.images, c, name)) keep(m.extras, c, previous);
     });
 }
@@ -45,7 +45,7 @@ void Reader::read_slot(Slot& s, const Element n) {
         else keep(s.extras, a);
     }
     for_children(n, [&](const Element c, std::string_view name, std::string_view previous) {
-        if (is(name, "Name")) s.names.push_back(localized(c));
+        if (is(name, "Name")) localized(s.names, c);
         else if (is(name, "ModuleIdent")) {
             SlotModuleIdent id;
             id.pos = pos_of(c);
@@ -58,9 +58,9 @@ void Reader::read_slot(Slot& s, const Element n) {
             mc.pos = pos_of(c);
             for (const Attr& a : c.attributes()) keep(mc.extras, a);
             for_children(c, [&](const Element cc, std::string_view cn, std::string_view prev) {
-                if (is(cn, "Class")) mc.class_name = text_of(cc);
+                if (is(cn, "Class")) text(mc.class_name, cc);
                 else if (is(cn, "VendorId")) mc.vendor_id = u32(cc);
-                else if (is(cn, "Name")) mc.names.push_back(localized(cc));
+                else if (is(cn, "Name")) localized(mc.names, cc);
                 else keep(mc.extras, cc, prev);
             });
             s.module_classes.push_back(std::move(mc));

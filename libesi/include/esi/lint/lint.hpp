@@ -61,6 +61,9 @@ struct LintReport {
 // describes, with positions in the YAML.
 [[nodiscard]] FileReport lint_bytes(std::string_view bytes, const std::string& path, const EffectiveConfig& config,
                                     const std::optional<std::filesystem::path>& xsd_dir = std::nullopt);
+// The same, taking the bytes over: an ESI file is read from them in place, without a copy.
+[[nodiscard]] FileReport lint_bytes(std::string&& bytes, const std::string& path, const EffectiveConfig& config,
+                                    const std::optional<std::filesystem::path>& xsd_dir = std::nullopt);
 
 // Expands directories (recursive *.xml, sorted) and lints every file. A named file ending in
 // .yaml/.yml is a YAML device source; directory walks take only *.xml (a repository's YAML files
