@@ -4,6 +4,7 @@
 // and without BOM, UTF-16 (both byte orders) and the declared 8-bit encodings ISO-8859-1 and
 // Windows-1252 (often spelled ISO8859-1).
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -29,6 +30,16 @@ struct DecodedText {
 [[nodiscard]] DecodedText decode_xml_bytes(std::string_view bytes);
 // Same, reusing the buffer when the input already is valid UTF-8 (the common case).
 [[nodiscard]] DecodedText decode_xml_bytes_owned(std::string bytes);
+
+// When the bytes are their own UTF-8 text (valid UTF-8 with or without a byte-order mark, and
+// no 8-bit encoding declared): where the text starts (after the mark), what they were, the
+// declared encoding. Nothing when they have to be decoded.
+struct Utf8InPlace {
+    std::size_t offset = 0;
+    SourceEncoding encoding = SourceEncoding::utf8;
+    std::string declared;
+};
+[[nodiscard]] std::optional<Utf8InPlace> utf8_in_place(std::string_view bytes);
 
 // True when text is valid UTF-8 (no overlongs, no surrogates, nothing above U+10FFFF).
 [[nodiscard]] bool is_valid_utf8(std::string_view text, std::size_t* first_bad = nullptr);

@@ -1,6 +1,8 @@
 #pragma once
 // A decoded (UTF-8) source file plus an index of its line starts, so that byte offsets
-// from the parser turn into line:column positions and diagnostics can quote the line.
+// from the parser turn into line:column positions and diagnostics can quote the line. The text is
+// either a string of its own (decoded from another encoding, or given) or the file's bytes as read
+// (a UTF-8 file is its own text: it is not copied); a NUL byte follows it either way.
 
 #include <cstddef>
 #include <cstdint>
@@ -10,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "esi/io/read_file.hpp"
 #include "esi/source_pos.hpp"
 
 namespace esi {
@@ -18,12 +21,13 @@ class SourceText {
 public:
     SourceText() = default;
     SourceText(std::string path, std::string utf8);
+    // The text is `bytes` from `offset` to its end (a byte-order mark before it is left out).
+    SourceText(std::string path, FileBytes bytes, std::size_t offset);
     SourceText(const SourceText&) = delete;
     SourceText& operator=(const SourceText&) = delete;
 
     [[nodiscard]] const std::string& path() const { return path_; }
-    [[nodiscard]] const std::string& text() const { return text_; }
-    [[nodiscard]] std::string& mutable_text() { return text_; }
+    [[nodiscard]] std::string_view text() const { return text_; }
 
     // Line and column (both 1-based; the column counts Unicode code points) of a byte offset.
     [[nodiscard]] SourcePos position_of(std::size_t offset) const;
@@ -52,7 +56,9 @@ private:
     const std::vector<LineStart>& line_starts() const;
 
     std::string path_;
-    std::string text_;
+    std::string owned_;  // the text, when it is a string of its own
+    FileBytes bytes_;    // the file's bytes, when the text lies in them
+    std::string_view text_;
     mutable std::once_flag index_once_;
     mutable std::vector<LineStart> line_starts_;
 };

@@ -52,7 +52,7 @@ public:
             column_ = 1;
             offset_ = source_.line_start(pos.line);
         }
-        const std::string& text = source_.text();
+        const std::string_view text = source_.text();
         while (column_ < pos.column && offset_ < text.size()) {
             ++offset_;
             while (offset_ < text.size() && (static_cast<unsigned char>(text[offset_]) & 0xC0) == 0x80) ++offset_;
@@ -71,7 +71,7 @@ private:
 // Whether the start tag at `offset` spells the attribute `name`. The reader drops an attribute whose
 // value it cannot parse (and reports xml-number-format there); this lets the "missing" rules stay
 // silent for a value that is present but malformed, so one fault gives one finding.
-bool start_tag_has_attribute(const std::string& text, std::size_t at, std::string_view name) {
+bool start_tag_has_attribute(std::string_view text, std::size_t at, std::string_view name) {
     if (at >= text.size() || text[at] != '<') return false;
     char quote = 0;
     for (std::size_t i = at + 1; i < text.size(); ++i) {

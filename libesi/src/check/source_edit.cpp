@@ -12,7 +12,7 @@ bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; 
 std::size_t offset_of(const EsiDocument& document, SourcePos element) {
     if (!document.source || !element.known() || element.line > document.source->line_count()) return std::string::npos;
     const SourceText& source = *document.source;
-    const std::string& text = source.text();
+    const std::string_view text = source.text();
     // The column counts code points: walk them to the byte offset.
     std::size_t at = source.line_start(element.line);
     for (std::uint32_t column = 1; column < element.column && at < text.size(); ++column) {
@@ -74,7 +74,7 @@ std::optional<Fix> replace_element_text(const EsiDocument& document, SourcePos e
                                         std::string replacement, std::string description) {
     const std::size_t at = offset_of(document, element);
     if (at == std::string::npos || expected.empty()) return std::nullopt;
-    const std::string& text = document.source->text();
+    const std::string_view text = document.source->text();
     const std::size_t end = tag_end(text, at);
     if (end == std::string::npos || text[end - 2] == '/') return std::nullopt;
     const std::size_t content = end;

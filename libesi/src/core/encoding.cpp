@@ -216,26 +216,30 @@ bool is_valid_utf8(std::string_view text, std::size_t* first_bad) {
     return true;
 }
 
-DecodedText decode_xml_bytes_owned(std::string bytes) {
-    // Plain UTF-8 (with or without BOM, no 8-bit declaration): keep the buffer.
+std::optional<Utf8InPlace> utf8_in_place(std::string_view bytes) {
+    // Plain UTF-8 (with or without BOM, no 8-bit declaration) is its own text.
     const bool utf16 = bytes.size() >= 2 && ((static_cast<unsigned char>(bytes[0]) == 0xFF && static_cast<unsigned char>(bytes[1]) == 0xFE) ||
                                              (static_cast<unsigned char>(bytes[0]) == 0xFE && static_cast<unsigned char>(bytes[1]) == 0xFF) ||
                                              bytes[0] == '\0' || bytes[1] == '\0');
-    if (!utf16) {
-        const bool bom = bytes.size() >= 3 && std::string_view(bytes).substr(0, 3) == "\xEF\xBB\xBF";
-        const std::string_view body = std::string_view(bytes).substr(bom ? 3 : 0);
-        const std::string declared = declared_encoding(body);
-        const std::string name = upper(declared);
-        const bool eight_bit = !bom && (name == "ISO-8859-1" || name == "ISO8859-1" || name == "LATIN1" || name == "ISO_8859-1" ||
-                                        name == "ISO-8859-15" || name == "WINDOWS-1252" || name == "CP1252");
-        if (!eight_bit && is_valid_utf8(body)) {
-            DecodedText out;
-            out.encoding = bom ? SourceEncoding::utf8_bom : SourceEncoding::utf8;
-            out.declared = declared;
-            if (bom) bytes.erase(0, 3);
-            out.utf8 = std::move(bytes);
-            return out;
-        }
+    if (utf16) return std::nullopt;
+    const bool bom = bytes.size() >= 3 && bytes.substr(0, 3) == "\xEF\xBB\xBF";
+    const std::string_view body = bytes.substr(bom ? 3 : 0);
+    std::string declared = declared_encoding(body);
+    const std::string name = upper(declared);
+    const bool eight_bit = !bom && (name == "ISO-8859-1" || name == "ISO8859-1" || name == "LATIN1" || name == "ISO_8859-1" ||
+                                    name == "ISO-8859-15" || name == "WINDOWS-1252" || name == "CP1252");
+    if (eight_bit || !is_valid_utf8(body)) return std::nullopt;
+    return Utf8InPlace{bom ? std::size_t{3} : std::size_t{0}, bom ? SourceEncoding::utf8_bom : SourceEncoding::utf8, std::move(declared)};
+}
+
+DecodedText decode_xml_bytes_owned(std::string bytes) {
+    if (std::optional<Utf8InPlace> in_place = utf8_in_place(bytes)) {
+        DecodedText out;
+        out.encoding = in_place->encoding;
+        out.declared = std::move(in_place->declared);
+        if (in_place->offset) bytes.erase(0, in_place->offset);
+        out.utf8 = std::move(bytes);
+        return out;
     }
     DecodedText out = decode_xml_bytes(std::string_view(bytes));
     std::string().swap(bytes);  // the raw bytes are no longer needed

@@ -51,7 +51,10 @@ std::size_t count_newlines(std::string_view text) {
     return count;
 }
 
-SourceText::SourceText(std::string path, std::string utf8) : path_(std::move(path)), text_(std::move(utf8)) {}
+SourceText::SourceText(std::string path, std::string utf8) : path_(std::move(path)), owned_(std::move(utf8)), text_(owned_) {}
+
+SourceText::SourceText(std::string path, FileBytes bytes, std::size_t offset)
+    : path_(std::move(path)), bytes_(std::move(bytes)), text_(bytes_.view().substr(offset)) {}
 
 namespace {
 
@@ -106,7 +109,7 @@ std::uint32_t SourceText::line_of(std::size_t offset) const {
 std::uint32_t SourceText::code_points(std::size_t from, std::size_t to) const {
     to = std::min(to, text_.size());
     if (from >= to) return 0;
-    return static_cast<std::uint32_t>(count_code_points(std::string_view(text_).substr(from, to - from)));
+    return static_cast<std::uint32_t>(count_code_points(text_.substr(from, to - from)));
 }
 
 SourcePos SourceText::position_of(std::size_t offset) const {
@@ -122,7 +125,7 @@ namespace {
 // eight bytes at a time here, inline, the last bytes with one load of the eight bytes ending at
 // the offset (it may reach before `begin`, never before the text). Only a span that holds
 // non-ASCII is counted by count_code_points; a call per position cost more than the count.
-std::size_t columns_between(const std::string& text, std::size_t begin, std::size_t offset) {
+std::size_t columns_between(std::string_view text, std::size_t begin, std::size_t offset) {
     const std::size_t n = offset - begin;
     if (n == 0) return 0;
     if constexpr (std::endian::native == std::endian::little) {
@@ -137,7 +140,7 @@ std::size_t columns_between(const std::string& text, std::size_t begin, std::siz
             if (any_high == 0) return n;
         }
     }
-    return count_code_points(std::string_view(text).substr(begin, n));
+    return count_code_points(text.substr(begin, n));
 }
 
 }  // namespace
@@ -149,7 +152,7 @@ SourcePos PositionCursor::position_of(std::size_t offset) {
     // after the previous one: the line comes from stepping through the line index (which the
     // quoting of diagnostics needs anyway) and the column from the few bytes before the offset.
     // Walking the text itself with memchr cost about 180 instructions a position, this ~50.
-    const std::string& text = source_.text();
+    const std::string_view text = source_.text();
     offset = std::min(offset, text.size());
     const std::size_t lines = line_starts_.size();
     std::size_t line = line_;
@@ -180,7 +183,7 @@ std::string_view SourceText::line(std::uint32_t line_number) const {
     const std::size_t start = starts[line_number - 1];
     std::size_t end = line_number < starts.size() ? starts[line_number] : text_.size();
     while (end > start && (text_[end - 1] == '\n' || text_[end - 1] == '\r')) --end;
-    return std::string_view(text_).substr(start, end - start);
+    return text_.substr(start, end - start);
 }
 
 }  // namespace esi

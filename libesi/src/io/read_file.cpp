@@ -4,53 +4,120 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <system_error>
 
 namespace esi {
 
-std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        error = "is a directory";
-        return std::nullopt;
+namespace {
+
+// A buffer of `size` bytes (and a NUL after them) whose bytes are not initialised: they are read
+// into right after.
+struct Growing {
+    std::unique_ptr<char[]> data;
+    std::size_t size = 0;
+    std::size_t capacity = 0;
+
+    void reserve(std::size_t n) {
+        if (data && n <= capacity) return;
+        std::unique_ptr<char[]> bigger(new char[n + 1]);
+        if (size) std::memcpy(bigger.get(), data.get(), size);
+        data = std::move(bigger);
+        capacity = n;
     }
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (!file) {
-        error = std::error_code(errno, std::generic_category()).message();
-        return std::nullopt;
-    }
-    auto too_large = [&] {
-        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
-        std::fclose(file);
-        return std::nullopt;
-    };
+};
+
+// Reads `file` whole (its size as announced, then whatever follows), bounded by max_bytes; false
+// and `error` set on failure.
+template <class Sink>
+bool read_all(std::FILE* file, const std::filesystem::path& path, std::uint64_t max_bytes, std::string& error, Sink& sink) {
     // A regular file is read into a buffer of its size in one call, so it is neither copied nor
     // over-allocated. Whatever the size did not cover (a file that grew, a pipe, a device) is
     // appended in chunks, bounded by max_bytes like the announced size.
-    std::string bytes;
     std::error_code size_error;
     const std::uintmax_t size = std::filesystem::file_size(path, size_error);
-    if (!size_error && size > max_bytes) return too_large();
-    if (!size_error) {
-        bytes.resize(static_cast<std::size_t>(size));
-        bytes.resize(std::fread(bytes.data(), 1, bytes.size(), file));
+    if (!size_error && size > max_bytes) {
+        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+        return false;
     }
+    if (!size_error) sink.read(file, static_cast<std::size_t>(size));
     char buffer[1 << 16];
-    for (bool more = bytes.size() == size || size_error; more;) {
+    for (bool more = sink.size() == size || size_error; more;) {
         const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
-        bytes.append(buffer, n);
-        if (bytes.size() > max_bytes) return too_large();
+        sink.append(buffer, n);
+        if (sink.size() > max_bytes) {
+            error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+            return false;
+        }
         more = n == sizeof buffer;
     }
-    const bool failed = std::ferror(file) != 0;
-    std::fclose(file);
-    if (failed) {
+    if (std::ferror(file) != 0) {
         error = "read error";
-        return std::nullopt;
+        return false;
     }
-    return bytes;
+    return true;
+}
+
+std::FILE* open_for_reading(const std::filesystem::path& path, std::string& error) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        error = "is a directory";
+        return nullptr;
+    }
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) error = std::error_code(errno, std::generic_category()).message();
+    return file;
+}
+
+struct StringSink {
+    std::string bytes;
+    void read(std::FILE* file, std::size_t n) {
+        bytes.resize(n);
+        bytes.resize(std::fread(bytes.data(), 1, n, file));
+    }
+    void append(const char* p, std::size_t n) { bytes.append(p, n); }
+    [[nodiscard]] std::size_t size() const { return bytes.size(); }
+};
+
+struct BufferSink {
+    Growing buffer;
+    void read(std::FILE* file, std::size_t n) {
+        buffer.reserve(n);
+        buffer.size = std::fread(buffer.data.get(), 1, n, file);
+    }
+    void append(const char* p, std::size_t n) {
+        if (buffer.size + n > buffer.capacity) buffer.reserve(std::max(buffer.capacity * 2, buffer.size + n));
+        std::memcpy(buffer.data.get() + buffer.size, p, n);
+        buffer.size += n;
+    }
+    [[nodiscard]] std::size_t size() const { return buffer.size; }
+};
+
+}  // namespace
+
+std::optional<FileBytes> read_file_buffer(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
+    std::FILE* file = open_for_reading(path, error);
+    if (!file) return std::nullopt;
+    BufferSink sink;
+    sink.buffer.reserve(0);
+    const bool ok = read_all(file, path, max_bytes, error, sink);
+    std::fclose(file);
+    if (!ok) return std::nullopt;
+    sink.buffer.data[sink.buffer.size] = '\0';
+    return FileBytes(std::move(sink.buffer.data), sink.buffer.size);
+}
+
+std::optional<std::string> read_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
+    std::FILE* file = open_for_reading(path, error);
+    if (!file) return std::nullopt;
+    StringSink sink;
+    const bool ok = read_all(file, path, max_bytes, error, sink);
+    std::fclose(file);
+    if (!ok) return std::nullopt;
+    return std::move(sink.bytes);
 }
 
 std::optional<std::string> read_regular_file_bytes(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {

@@ -35,7 +35,7 @@ bool Suppressions::suppresses(const Diagnostic& diagnostic) const {
 
 Suppressions find_suppressions(const SourceText& source, Diagnostics& diagnostics) {
     Suppressions out;
-    const std::string& text = source.text();
+    const std::string_view text = source.text();
     constexpr std::string_view marker = "esi-lint:";
     // The marker is found by its ':', which ESI files hardly use outside namespace prefixes and
     // URLs, with memchr; std::string::find stopped at every 'e' of the file instead, about 3

@@ -19,7 +19,9 @@
 
 #include <cstdint>
 #include <cstring>
+#include <algorithm>
 #include <deque>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -92,41 +94,83 @@ private:
 
 class Tree {
 public:
-    Tree() { nodes_.emplace_back(); }  // index 0 stands for "none"
+    Tree() { grow(256); }  // index 0 stands for "none"
 
     [[nodiscard]] Element element(std::uint32_t index) const { return {this, index}; }
-    [[nodiscard]] const Node& node(std::uint32_t index) const { return nodes_[index]; }
-    [[nodiscard]] Node& node(std::uint32_t index) { return nodes_[index]; }
+    [[nodiscard]] const Node& node(std::uint32_t index) const { return nodes_.get()[index]; }
+    [[nodiscard]] Node& node(std::uint32_t index) { return nodes_.get()[index]; }
     [[nodiscard]] std::span<const Attribute> attributes_of(const Node& n) const {
         return {attributes_.data() + n.first_attribute, n.attribute_count};
     }
 
     // Everything added after a mark is dropped again by truncate(mark).
     struct Mark {
-        std::size_t nodes = 0;
+        std::uint32_t nodes = 0;
         std::size_t attributes = 0;
         std::size_t decoded = 0;
     };
-    [[nodiscard]] Mark mark() const { return {nodes_.size(), attributes_.size(), decoded_.size()}; }
+    [[nodiscard]] Mark mark() const { return {size_, attributes_.size(), decoded_.size()}; }
     void truncate(const Mark& m) {
-        nodes_.resize(m.nodes);
+        size_ = m.nodes;
         attributes_.resize(m.attributes);
         decoded_.resize(m.decoded);
     }
 
-    // For the parser.
-    void reserve(std::size_t nodes) { nodes_.reserve(nodes); }
+    // For the parser. Nodes live in one array that grows by doubling and is never shrunk: the
+    // largest device of a document sets its size, and every later one reuses it.
+    void reserve(std::size_t nodes) {
+        if (nodes > capacity_) grow(nodes);
+    }
     std::uint32_t add_node() {
-        nodes_.emplace_back();
-        return static_cast<std::uint32_t>(nodes_.size() - 1);
+        if (size_ == capacity_) grow(2 * capacity_);
+        nodes_.get()[size_] = Node{};
+        return size_++;
+    }
+    // An element the parser read a start tag of, its fields written once (the parser's inner loop
+    // adds one for nearly every element of a file).
+    std::uint32_t add_element(std::string_view name, std::uint32_t parent, std::uint32_t offset, SourcePos pos) {
+        if (size_ == capacity_) grow(2 * capacity_);
+        Node& n = nodes_.get()[size_];
+        n.name = name;
+        n.value = {};
+        n.parent = parent;
+        n.first_child = 0;
+        n.next_sibling = 0;
+        n.first_attribute = static_cast<std::uint32_t>(attributes_.size());
+        n.attribute_count = 0;
+        n.offset = offset;
+        n.pos = pos;
+        n.kind = NodeKind::element;
+        n.has_value = false;
+        n.complete = false;
+        return size_++;
     }
     std::vector<Attribute>& attributes() { return attributes_; }
     // Keeps a decoded value; the view stays valid until a truncate() before it.
     std::string_view keep(std::string&& decoded) { return decoded_.emplace_back(std::move(decoded)); }
-    [[nodiscard]] std::size_t node_count() const { return nodes_.size() - 1; }
+    [[nodiscard]] std::size_t node_count() const { return size_ - 1; }
 
 private:
-    std::vector<Node> nodes_;
+    // Raw storage: a node is written whole when it is added (Node is an aggregate, so its objects
+    // begin their lifetime in the allocated storage), and growing copies only the nodes in use.
+    struct Release {
+        void operator()(Node* p) const { ::operator delete(p); }
+    };
+    void grow(std::size_t capacity) {
+        std::unique_ptr<Node, Release> nodes(static_cast<Node*>(::operator new(capacity * sizeof(Node))));
+        if (size_ == 0) {
+            nodes.get()[0] = Node{};  // the first, "none"
+            size_ = 1;
+        } else {
+            std::copy(nodes_.get(), nodes_.get() + size_, nodes.get());
+        }
+        nodes_ = std::move(nodes);
+        capacity_ = static_cast<std::uint32_t>(capacity);
+    }
+
+    std::unique_ptr<Node, Release> nodes_;
+    std::uint32_t size_ = 0;
+    std::uint32_t capacity_ = 0;
     std::vector<Attribute> attributes_;
     std::deque<std::string> decoded_;  // a deque: growing it moves no string, so views stay valid
 };

@@ -234,16 +234,30 @@ ReadResult read_esi(std::string_view bytes, std::string path, const ReadOptions&
 }
 
 namespace {
-ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOptions& options);
-}  // namespace
+
+// The text to read, decoded, and what the decoding found.
+struct Decoded {
+    std::shared_ptr<SourceText> source;
+    SourceEncoding encoding = SourceEncoding::utf8;
+    std::size_t first_invalid_offset = std::string::npos;
+    std::string declared;
+};
+
+Decoded decoded_string(std::string bytes, const std::string& path) {
+    DecodedText decoded = decode_xml_bytes_owned(std::move(bytes));
+    return {std::make_shared<SourceText>(path, std::move(decoded.utf8)), decoded.encoding, decoded.first_invalid_offset,
+            std::move(decoded.declared)};
+}
+
+ReadResult read_decoded(Decoded decoded, const std::string& path, const ReadOptions& options);
 
 // Reading holds the text, the tree of the largest element read at once and the model: for dense
 // markup several times the file, so a file near the input limit can exhaust a machine's memory.
 // That is an unreadable input (io-error), never an abort.
-ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOptions& options) {
-    const std::size_t size = bytes_in.size();
+template <class Decode>
+ReadResult read_guarded(std::size_t size, const std::string& path, const ReadOptions& options, Decode&& decode) {
     try {
-        return read_unguarded(std::move(bytes_in), path, options);
+        return read_decoded(decode(), path, options);
     } catch (const std::bad_alloc&) {
         ReadResult result;
         result.diagnostics.emplace(Severity::error, "io-error",
@@ -253,12 +267,18 @@ ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOpti
     }
 }
 
+}  // namespace
+
+ReadResult read_esi_owned(std::string bytes_in, std::string path, const ReadOptions& options) {
+    const std::size_t size = bytes_in.size();
+    return read_guarded(size, path, options, [&] { return decoded_string(std::move(bytes_in), path); });
+}
+
 namespace {
 
-ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOptions& options) {
+ReadResult read_decoded(Decoded decoded, const std::string& path, const ReadOptions& options) {
     ReadResult result;
-    DecodedText decoded = decode_xml_bytes_owned(std::move(bytes_in));
-    auto source = std::make_shared<SourceText>(path, std::move(decoded.utf8));
+    const std::shared_ptr<SourceText> source = std::move(decoded.source);
     result.source = source;
 
     if (decoded.first_invalid_offset != std::string::npos) {
@@ -335,15 +355,26 @@ ReadResult read_unguarded(std::string bytes_in, std::string path, const ReadOpti
 
 }  // namespace
 
+// A UTF-8 file is read in place: the bytes as read are the text.
 ReadResult read_esi_file(const std::filesystem::path& path, const ReadOptions& options) {
     std::string error;
-    std::optional<std::string> bytes = read_file_bytes(path, error);
+    std::optional<FileBytes> bytes = read_file_buffer(path, error);
+    const std::string name = path.string();
     if (!bytes) {
         ReadResult result;
-        result.diagnostics.emplace(Severity::error, "io-error", "cannot read file: " + error, path.string(), SourcePos{});
+        result.diagnostics.emplace(Severity::error, "io-error", "cannot read file: " + error, name, SourcePos{});
         return result;
     }
-    return read_esi_owned(std::move(*bytes), path.string(), options);
+    const std::size_t size = bytes->size();
+    return read_guarded(size, name, options, [&] {
+        if (std::optional<Utf8InPlace> in_place = utf8_in_place(bytes->view()))
+            return Decoded{std::make_shared<SourceText>(name, std::move(*bytes), in_place->offset), in_place->encoding, std::string::npos,
+                           std::move(in_place->declared)};
+        DecodedText other = decode_xml_bytes(bytes->view());
+        *bytes = FileBytes();
+        return Decoded{std::make_shared<SourceText>(name, std::move(other.utf8)), other.encoding, other.first_invalid_offset,
+                       std::move(other.declared)};
+    });
 }
 
 }  // namespace esi

@@ -41,14 +41,15 @@ public:
 
 // The base-from-member idiom: the Checker the Scanner refers to exists before the Scanner.
 struct CheckerHolder {
-    CheckerHolder(const std::string& text, SourceEncoding encoding) : checker(text, encoding) {}
+    CheckerHolder(std::string_view text, SourceEncoding encoding) : checker(text, encoding) {}
     xml_well_formed::Checker checker;
 };
 
 class TreeParser : private CheckerHolder, private xml_well_formed::Scanner {
 public:
-    // `text` is valid UTF-8 without NUL bytes and must outlive the parser and the tree.
-    TreeParser(const std::string& text, SourceEncoding encoding, Tree& tree);
+    // `text` is valid UTF-8 without NUL bytes, followed by a NUL byte, and must outlive the parser
+    // and the tree.
+    TreeParser(std::string_view text, SourceEncoding encoding, Tree& tree);
 
     // The prolog and the root element's start tag; none after a fault.
     Element root();

@@ -58,9 +58,9 @@ struct EntityScope {
 // One pass over one text: the document, or the replacement text of an entity being checked.
 class Scanner {
 public:
-    // `text` must stay alive and be followed by a NUL byte (a std::string's terminator): the
-    // character-data loops stop on it without a bounds test.
-    Scanner(Checker& checker, const std::string& text, const EntityScope* scope)
+    // `text` must stay alive and be followed by a NUL byte (a std::string's terminator, or the one
+    // after a file's bytes): the character-data loops stop on it without a bounds test.
+    Scanner(Checker& checker, std::string_view text, const EntityScope* scope)
         : checker_(checker), begin_(text.data()), end_(text.data() + text.size()), p_(begin_), scope_(scope) {}
 
     // [22] prolog: the XML declaration, comments, processing instructions and the DOCTYPE, up to
@@ -151,7 +151,7 @@ protected:
 
 class Checker {
 public:
-    Checker(const std::string& text, SourceEncoding encoding) : encoding(encoding), text_(text) {}
+    Checker(std::string_view text, SourceEncoding encoding) : encoding(encoding), text_(text) {}
 
     std::size_t first_beyond_ascii() const {
         for (std::size_t i = 0; i < text_.size(); ++i)
@@ -193,7 +193,7 @@ public:
     std::unordered_set<std::string_view> attribute_set;  // the same, for tags with many attributes
 
 private:
-    const std::string& text_;
+    std::string_view text_;
     std::optional<WellFormednessFault> fault_;
 };
 
