@@ -21,34 +21,7 @@ bool declared(xml_tree::Element element, std::string_view prefix) {
     return false;
 }
 
-bool name_start(char c) {
-    const auto u = static_cast<unsigned char>(c);
-    return (u >= 'A' && u <= 'Z') || (u >= 'a' && u <= 'z') || u == '_' || u >= 0x80;
-}
-
-bool name_char(char c) { return name_start(c) || (c >= '0' && c <= '9') || c == '-' || c == '.'; }
-
 }  // namespace
-
-// A prefixed name in markup follows '<' (an element) or a blank (an attribute) and has a name
-// character right after its colon; text such as "Hinweis: …" seldom looks like that, and when it
-// does, the check of every start tag decides.
-bool only_prefixes_of_the_root(std::string_view text, xml_tree::Element root) {
-    std::set<std::string_view, std::less<>> declared_on_root;
-    for (const xml_tree::Attribute& a : root.attributes())
-        if (a.name.starts_with("xmlns:")) declared_on_root.insert(a.name.substr(6));
-    for (std::size_t colon = text.find(':'); colon != std::string_view::npos; colon = text.find(':', colon + 1)) {
-        if (colon + 1 >= text.size() || !name_start(text[colon + 1])) continue;
-        std::size_t start = colon;
-        while (start > 0 && name_char(text[start - 1])) --start;
-        if (start == colon || start == 0 || !name_start(text[start])) continue;
-        const char before = text[start - 1];
-        if (before != '<' && before != ' ' && before != '\t' && before != '\n' && before != '\r') continue;
-        const std::string_view prefix = text.substr(start, colon - start);
-        if (prefix != "xml" && prefix != "xmlns" && !declared_on_root.count(prefix)) return false;
-    }
-    return true;
-}
 
 UndeclaredPrefixCheck::UndeclaredPrefixCheck(const SourceText& source, xml_tree::TreeParser& parser, xml_tree::Element root,
                                              Diagnostics& diagnostics)

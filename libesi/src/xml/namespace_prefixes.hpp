@@ -18,13 +18,10 @@ namespace esi {
 // The namespace the xsi: prefix stands for by convention; the safe fix declares it on the root.
 inline constexpr std::string_view xml_schema_instance_namespace = "http://www.w3.org/2001/XMLSchema-instance";
 
-// Whether every prefixed name the text may hold uses a prefix that the root element declares,
-// which then holds everywhere: no element needs checking (most vendor files).
-[[nodiscard]] bool only_prefixes_of_the_root(std::string_view text, xml_tree::Element root);
-
 // One xml-undeclared-prefix error per prefix that an element or attribute name uses while no
-// element around it declares it, at its first use; run on every start tag while the parser's pass
-// is at it. The one for xsi: carries the fix declaring it on the root element.
+// element around it declares it, at its first use; run on the start tags with a prefixed name
+// while the parser's pass is at them. The one for xsi: carries the fix declaring it on the root
+// element.
 class UndeclaredPrefixCheck final : public xml_tree::StartTagObserver {
 public:
     UndeclaredPrefixCheck(const SourceText& source, xml_tree::TreeParser& parser, xml_tree::Element root, Diagnostics& diagnostics);

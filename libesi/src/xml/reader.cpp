@@ -216,17 +216,6 @@ namespace {
 
 using xml_reader::Reader;
 
-// The start-tag checks that a document needs, run from the parser's pass.
-struct StartTagChecks final : xml_tree::StartTagObserver {
-    StartTagChecks(XIncludeCheck* xinclude, UndeclaredPrefixCheck* prefixes) : xinclude(xinclude), prefixes(prefixes) {}
-    void start_tag(xml_tree::Element element) override {
-        if (xinclude) xinclude->start_tag(element);
-        if (prefixes) prefixes->start_tag(element);
-    }
-    XIncludeCheck* xinclude;
-    UndeclaredPrefixCheck* prefixes;
-};
-
 }  // namespace
 
 ReadResult read_esi(std::string_view bytes, std::string path, const ReadOptions& options) {
@@ -310,21 +299,18 @@ ReadResult read_decoded(Decoded decoded, const std::string& path, const ReadOpti
     Diagnostics read;
     EsiDocument doc;
     if (const xml_tree::Element root = parser.root()) {
-        // XInclude elements and undeclared namespace prefixes are looked for at every start tag
-        // only where the text may hold them (most files have neither).
+        // XInclude elements are looked for at every start tag where the text may hold them (most
+        // files have none); undeclared namespace prefixes at the start tags with a prefixed name.
         std::optional<XIncludeCheck> xinclude_check;
-        std::optional<UndeclaredPrefixCheck> prefix_check;
         if (may_hold_xinclude(source->text())) xinclude_check.emplace(*source, xinclude);
-        if (!only_prefixes_of_the_root(source->text(), root)) prefix_check.emplace(*source, parser, root, prefixes);
-        StartTagChecks checks{xinclude_check ? &*xinclude_check : nullptr, prefix_check ? &*prefix_check : nullptr};
-        if (xinclude_check || prefix_check) {
-            checks.start_tag(root);
-            parser.observe(&checks);
-        }
+        UndeclaredPrefixCheck prefix_check(*source, parser, root, prefixes);
+        if (xinclude_check) xinclude_check->start_tag(root);
+        if (parser.last_tag_prefixed()) prefix_check.start_tag(root);
+        parser.observe(xinclude_check ? &*xinclude_check : nullptr, &prefix_check);
         Reader reader(*source, parser, read, options);
         doc = reader.read_document(root);
         parser.finish();
-        parser.observe(nullptr);
+        parser.observe(nullptr, nullptr);
     }
     if (const auto& fault = parser.fault()) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: " + fault->message, path,

@@ -87,10 +87,11 @@ std::string decode(const char* begin, const char* end, Decoding how) {
 
 namespace {
 
-// ASCII name characters ([4a] NameChar below U+0080).
+// ASCII name characters ([4a] NameChar below U+0080) but ':', for the inner loop's name scan: a
+// prefixed name ends it, and its start tag is read by start_tag(), which tells the observers.
 constexpr std::array<bool, 256> make_name_chars() {
     std::array<bool, 256> t{};
-    for (std::size_t b = 0; b < 256; ++b) t[b] = (classes[b] & name_char) != 0;
+    for (std::size_t b = 0; b < 256; ++b) t[b] = (classes[b] & name_char) != 0 && b != ':';
     return t;
 }
 constexpr std::array<bool, 256> name_chars = make_name_chars();
@@ -141,6 +142,13 @@ TreeParser::TreeParser(std::string_view text, SourceEncoding encoding, Tree& tre
 }
 
 bool TreeParser::report(const char* at, std::string message) { return fail(at, std::move(message)); }
+
+// `slow`: the start tag was read by start_tag(), which knows whether it has a prefixed name (one
+// the inner loop read has none).
+void TreeParser::tell_observers(std::uint32_t element, bool slow) {
+    if (observer_) observer_->start_tag(tree_.element(element));
+    if (prefix_observer_ && slow && tag_prefixed_) prefix_observer_->start_tag(tree_.element(element));
+}
 
 void TreeParser::count_lines(const char* from, const char* to) {
 #if defined(__SSE2__)
@@ -225,13 +233,14 @@ Element TreeParser::root() {
 std::uint32_t TreeParser::start_tag(std::uint32_t parent, bool& empty) {
     const char* open = p_;
     const char* q = p_ + 1;
-    while (name_chars[static_cast<Byte>(*q)]) ++q;
+    while (class_of(*q) & xml_well_formed::name_char) ++q;
     std::string_view element_name(open + 1, static_cast<std::size_t>(q - open - 1));
     if (class_of(*q) & non_ascii) {  // a name beyond ASCII: the scanner checks it
         p_ = open + 1;
         if (!name(element_name, "element")) return 0;
         q = p_;
     }
+    tag_prefixed_ = element_name.find(':') != std::string_view::npos;
     const std::uint32_t index = tree_.add_node();
     Node& n = tree_.node(index);
     n.name = element_name;
@@ -280,6 +289,7 @@ bool TreeParser::attribute(std::uint32_t element, std::string_view element_name)
     const char* at = p_;
     std::string_view attribute_name;
     if (!name(attribute_name, "attribute")) return false;
+    if (attribute_name.find(':') != std::string_view::npos) tag_prefixed_ = true;
     std::vector<Attribute>& attributes = tree_.attributes();
     const std::size_t first = tree_.node(element).first_attribute;
     const std::size_t count = attributes.size() - first;
@@ -626,9 +636,11 @@ bool TreeParser::expand(Element element) {
         append_child(parent, &top->last_child, child);
         if (empty) tree_.node(child).complete = true;
         else building_.push_back({child, 0});
-        if (observer_) {
+        // start_tag() read it when the name scan did not end at '>'; only then can it be prefixed.
+        const bool slow = *q != '>';
+        if (observer_ || (slow && prefix_observer_ && tag_prefixed_)) {
             p_ = p;
-            observer_->start_tag(tree_.element(child));
+            tell_observers(child, slow);
         }
     }
 }
@@ -654,7 +666,7 @@ Element TreeParser::next_child(Element parent) {
             const std::uint32_t child = start_tag(index, empty);
             if (child == 0) return {};
             if (empty) tree_.node(child).complete = true;
-            if (observer_) observer_->start_tag(tree_.element(child));
+            tell_observers(child, true);
             return tree_.element(child);
         }
         if (next == '!' || next == '?') {

@@ -30,9 +30,8 @@
 
 namespace esi::xml_tree {
 
-// Told about every element's start tag, in document order, while its ancestors are in the tree
-// (the checks of XInclude elements and namespace prefixes, which run only when the text may need
-// them).
+// Told about start tags, in document order, while the element's ancestors are in the tree (the
+// checks of XInclude elements and of namespace prefixes).
 class StartTagObserver {
 public:
     virtual ~StartTagObserver() = default;
@@ -97,7 +96,15 @@ public:
     };
     [[nodiscard]] std::optional<Doctype> doctype_declaration() const;
 
-    void observe(StartTagObserver* observer) { observer_ = observer; }
+    // `every` is told about every start tag after the root's, `prefixed` about those whose element
+    // or attribute names have a prefix (a ':'): those are few, and the parser finds them at no
+    // cost to the others (their names end the inner loop's name scan).
+    void observe(StartTagObserver* every, StartTagObserver* prefixed) {
+        observer_ = every;
+        prefix_observer_ = prefixed;
+    }
+    // Whether the last start tag read had a prefixed name.
+    [[nodiscard]] bool last_tag_prefixed() const { return tag_prefixed_; }
     // The position of a byte of the start tag just read (for the observers' diagnostics).
     SourcePos position_of(const char* p);
 
@@ -187,6 +194,7 @@ private:
     bool other_markup(std::uint32_t owner, std::uint32_t* last_child);
     void append_child(std::uint32_t parent, std::uint32_t* last_child, std::uint32_t child);
     bool unclosed(std::uint32_t element);
+    void tell_observers(std::uint32_t element, bool slow);
     bool report(const char* at, std::string message);
 
     Tree& tree_;
@@ -198,6 +206,8 @@ private:
     std::uint32_t memo_column_ = 0;
     std::vector<Open> building_;  // the elements expand() has open, innermost last
     StartTagObserver* observer_ = nullptr;
+    StartTagObserver* prefix_observer_ = nullptr;
+    bool tag_prefixed_ = false;  // the start tag being read has a prefixed element or attribute name
     std::uint32_t root_ = 0;
 };
 
