@@ -28,6 +28,30 @@ TEST(ReadFile, TheBufferHoldsTheBytesFollowedByANul) {
     }
 }
 
+// From esi::map_from_bytes on, a file is mapped: the same bytes and the NUL after them, also when
+// the file fills its last page exactly (the NUL is then on a page of its own); bytes whose memory
+// was let go read as they did.
+TEST(ReadFile, ABigFileIsMappedAndStaysReadableAfterItsPagesAreLetGo) {
+    esi::test::TempDir dir;
+    const auto size = static_cast<std::size_t>(esi::map_from_bytes);  // a multiple of any page size
+    for (const std::size_t n : {size, size + 1234}) {
+        std::string bytes(n, 'x');
+        for (std::size_t i = 0; i < n; i += 4093) bytes[i] = static_cast<char>('a' + i % 26);
+        const auto file = dir / "big.xml";
+        esi::test::write_text(file, bytes);
+        std::string error;
+        std::optional<esi::FileBytes> buffer = esi::read_file_buffer(file, error);
+        ASSERT_TRUE(buffer) << error;
+        EXPECT_TRUE(buffer->mapped());
+        EXPECT_EQ(buffer->view(), bytes);
+        EXPECT_EQ(buffer->view().data()[n], '\0');
+        buffer->release(0, n);
+        EXPECT_EQ(buffer->view(), bytes);
+        const esi::FileBytes moved = std::move(*buffer);
+        EXPECT_EQ(moved.view(), bytes);
+    }
+}
+
 TEST(ReadFile, ADirectoryAndAFileOverTheLimitAreRefused) {
     esi::test::TempDir dir;
     std::string error;

@@ -14,6 +14,7 @@
 
 #include "esi/io/read_file.hpp"
 #include "esi/source_pos.hpp"
+#include "esi/text_span.hpp"
 
 namespace esi {
 
@@ -28,6 +29,15 @@ public:
 
     [[nodiscard]] const std::string& path() const { return path_; }
     [[nodiscard]] std::string_view text() const { return text_; }
+    // Text [from, to) has been read: where the text is a mapped file, its memory may go (the
+    // bytes stay readable, from the page cache). The reader calls it behind each device of a big
+    // catalogue, so that the file is not resident as a whole next to the model read from it.
+    void release_text(std::size_t from, std::size_t to) const {
+        if (bytes_.mapped()) {
+            const auto skipped = static_cast<std::size_t>(text_.data() - bytes_.view().data());
+            bytes_.release(from + skipped, to + skipped);
+        }
+    }
 
     // Line and column (both 1-based; the column counts Unicode code points) of a byte offset.
     [[nodiscard]] SourcePos position_of(std::size_t offset) const;
@@ -43,6 +53,10 @@ public:
     // text already found, instead of a pass of its own on first use; nothing when the index is
     // built already.
     void adopt_line_starts(std::vector<std::uint32_t> starts) const;
+    // The comments of the text ("<!--" to "-->"), as the reader found them; null when unknown (a
+    // text no parser read). Inline suppressions are looked for in them only.
+    void adopt_comments(std::vector<TextSpan> comments) const { comments_ = std::move(comments), comments_known_ = true; }
+    [[nodiscard]] const std::vector<TextSpan>* comments() const { return comments_known_ ? &comments_ : nullptr; }
 
 private:
     friend class PositionCursor;
@@ -59,6 +73,8 @@ private:
     std::string owned_;  // the text, when it is a string of its own
     FileBytes bytes_;    // the file's bytes, when the text lies in them
     std::string_view text_;
+    mutable std::vector<TextSpan> comments_;
+    mutable bool comments_known_ = false;
     mutable std::once_flag index_once_;
     mutable std::vector<LineStart> line_starts_;
 };

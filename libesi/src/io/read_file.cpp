@@ -1,6 +1,7 @@
 #include "esi/io/read_file.hpp"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -9,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <system_error>
+#include <utility>
 
 namespace esi {
 
@@ -98,7 +100,65 @@ struct BufferSink {
 
 }  // namespace
 
+FileBytes::FileBytes(FileBytes&& other) noexcept
+    : data_(std::move(other.data_)), map_(other.map_), map_length_(other.map_length_), size_(other.size_) {
+    other.map_ = nullptr;
+    other.map_length_ = 0;
+    other.size_ = 0;
+}
+
+FileBytes& FileBytes::operator=(FileBytes&& other) noexcept {
+    if (this != &other) {
+        if (map_) ::munmap(map_, map_length_);
+        data_ = std::move(other.data_);
+        map_ = std::exchange(other.map_, nullptr);
+        map_length_ = std::exchange(other.map_length_, 0);
+        size_ = std::exchange(other.size_, 0);
+    }
+    return *this;
+}
+
+FileBytes::~FileBytes() {
+    if (map_) ::munmap(map_, map_length_);
+}
+
+std::optional<FileBytes> FileBytes::map(int fd, std::size_t size) {
+    const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    // The file's pages and one page of zeros after them, so that a NUL byte follows the bytes even
+    // when they fill their last page: an anonymous reservation, the file mapped over its start.
+    const std::size_t length = (size + page - 1) / page * page + page;
+    void* reserved = ::mmap(nullptr, length, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (reserved == MAP_FAILED) return std::nullopt;
+    if (size > 0 && ::mmap(reserved, size, PROT_READ, MAP_PRIVATE | MAP_FIXED, fd, 0) == MAP_FAILED) {
+        ::munmap(reserved, length);
+        return std::nullopt;
+    }
+    FileBytes bytes;
+    bytes.map_ = static_cast<char*>(reserved);
+    bytes.map_length_ = length;
+    bytes.size_ = size;
+    return bytes;
+}
+
+void FileBytes::release(std::size_t from, std::size_t to) const {
+    if (!map_) return;
+    const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+    const std::size_t first = (from + page - 1) / page * page;
+    const std::size_t last = std::min(to, size_) / page * page;
+    if (first < last) ::madvise(map_ + first, last - first, MADV_DONTNEED);
+}
+
 std::optional<FileBytes> read_file_buffer(const std::filesystem::path& path, std::string& error, std::uint64_t max_bytes) {
+    // A big regular file is mapped; anything else (or a mapping the system refuses) is read.
+    if (const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK); fd >= 0) {
+        struct stat st {};
+        std::optional<FileBytes> mapped;
+        if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && static_cast<std::uint64_t>(st.st_size) >= map_from_bytes &&
+            static_cast<std::uint64_t>(st.st_size) <= max_bytes)
+            mapped = FileBytes::map(fd, static_cast<std::size_t>(st.st_size));
+        ::close(fd);
+        if (mapped) return mapped;
+    }
     std::FILE* file = open_for_reading(path, error);
     if (!file) return std::nullopt;
     BufferSink sink;

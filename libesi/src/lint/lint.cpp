@@ -1,11 +1,15 @@
 #include "esi/lint/lint.hpp"
 
 #include <algorithm>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 #include <map>
 #include <mutex>
 #include <thread>
 
 #include "esi/check/run.hpp"
+#include "esi/io/read_file.hpp"
 #include "esi/load/document.hpp"
 #include "esi/xml/foreign_root.hpp"
 #include "esi/yaml/source.hpp"
@@ -101,6 +105,14 @@ FileReport lint_input(LintInput read, const std::string& path, const EffectiveCo
     if (!read.xml)
         for (auto& d : diagnostics.items()) d.fix.reset();
     if (schemas && read.xml && read.source && read.document) diagnostics.append(schemas->validate(*read.source));
+    // The findings are made: the model goes before the lines they quote are read, so that a big
+    // catalogue's model and its text (a mapped file whose pages the reader let go) are not both
+    // in memory (docs/performance.md). The allocator keeps freed memory for later use; after a big
+    // model it is given back to the system, so that the pages the quoting reads do not come on top.
+    read.document.reset();
+#if defined(__GLIBC__)
+    if (read.source && read.source->text().size() >= map_from_bytes) ::malloc_trim(0);
+#endif
     apply_settings(diagnostics, config);
     if (read.source) {
         const Suppressions suppressions = find_suppressions(*read.source, diagnostics);

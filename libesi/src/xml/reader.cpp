@@ -294,6 +294,7 @@ ReadResult read_decoded(Decoded decoded, const std::string& path, const ReadOpti
     // error alone, as if nothing had been read.
     xml_tree::Tree tree;
     xml_tree::TreeParser parser(source->text(), decoded.encoding, tree);
+    parser.release_behind(source.get());
     Diagnostics xinclude;
     Diagnostics prefixes;
     Diagnostics read;
@@ -318,6 +319,7 @@ ReadResult read_decoded(Decoded decoded, const std::string& path, const ReadOpti
         return result;
     }
     source->adopt_line_starts(parser.take_line_starts());
+    source->adopt_comments(parser.take_comments());
     // A DOCTYPE has no place in an ESI file (the ETG schema defines the format) and is the
     // vehicle of entity-expansion bombs and external entities. It is never processed: entities
     // are not expanded, external ones are never fetched, and references stay as written.

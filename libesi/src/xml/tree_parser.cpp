@@ -121,22 +121,9 @@ T load(const char* p) {
 
 // ---- the parser ------------------------------------------------------------------------------
 
-TreeParser::LineStarts::LineStarts(std::size_t expected)
-    : starts_(new std::uint32_t[std::max<std::size_t>(expected, 64)]), capacity_(std::max<std::size_t>(expected, 64)) {
-    starts_[0] = 0;
-}
-
-void TreeParser::LineStarts::grow(std::size_t n) {
-    const std::size_t capacity = capacity_ * 2 + n;
-    std::unique_ptr<std::uint32_t[]> starts(new std::uint32_t[capacity]);
-    std::memcpy(starts.get(), starts_.get(), count_ * sizeof(std::uint32_t));
-    starts_ = std::move(starts);
-    capacity_ = capacity;
-}
-
 TreeParser::TreeParser(std::string_view text, SourceEncoding encoding, Tree& tree)
     // Vendor files have lines of 25 to 40 bytes, and an element every 40 bytes or so.
-    : CheckerHolder(text, encoding), Scanner(checker, text, nullptr), tree_(tree), line_starts_(text.size() / 32),
+    : CheckerHolder(text, encoding), Scanner(checker, text, nullptr), tree_(tree), line_starts_(text.size() / 24),
       line_start_(text.data()) {
     tree_.reserve(std::min<std::size_t>(text.size() / 32, std::size_t{1} << 16));
 }

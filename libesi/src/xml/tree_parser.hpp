@@ -79,8 +79,15 @@ public:
             if (!expand(child)) return false;
             previous = name;
             tree_.truncate(mark);
+            if (releasable_) releasable_->release_text(released_, offset());
+            released_ = offset();
         }
     }
+
+    // The text read so far may let its memory go (SourceText::release_text) behind each child
+    // read by stream_children: nothing of it is in the tree any more.
+    void release_behind(const SourceText* source) { releasable_ = source; }
+    [[nodiscard]] std::size_t offset() const { return static_cast<std::size_t>(p_ - begin_); }
 
     // After the root element: reads its rest if the reader left any, then what follows it to the
     // end of the text (comments, processing instructions and white space only).
@@ -108,6 +115,8 @@ public:
     // The position of a byte of the start tag just read (for the observers' diagnostics).
     SourcePos position_of(const char* p);
 
+    // After finish(): the comments of the text, for SourceText.
+    std::vector<TextSpan> take_comments() { return std::move(checker.comments); }
     // After finish(): the line starts of the whole text (0, then the offset after every '\n'), for
     // SourceText.
     std::vector<std::uint32_t> take_line_starts();
@@ -123,23 +132,26 @@ private:
     // that steps over it; the rare constructs the scanner parses are counted afterwards.
 
     // Line starts found so far: 0, then the offset after every '\n'. A block of 16 bytes holds at
-    // most 16 line feeds, so room is made once per block and each start is one store.
+    // most 16 line feeds, so room is made once per block and each start is one store. The starts
+    // are kept in the vector SourceText adopts, sized ahead and cut to length at the end.
     class LineStarts {
     public:
-        explicit LineStarts(std::size_t expected);
+        explicit LineStarts(std::size_t expected) : starts_(std::max<std::size_t>(expected, 64)) { starts_[0] = 0; }
         void make_room(std::size_t n) {
-            if (capacity_ - count_ < n) grow(n);
+            if (starts_.size() - count_ < n) starts_.resize(2 * starts_.size() + n);
         }
         void add(std::uint32_t offset) { starts_[count_++] = offset; }
         [[nodiscard]] std::uint32_t count() const { return count_; }
         [[nodiscard]] std::uint32_t operator[](std::size_t i) const { return starts_[i]; }
-        std::vector<std::uint32_t> take() const { return {starts_.get(), starts_.get() + count_}; }
+        std::vector<std::uint32_t> take() {
+            starts_.resize(count_);
+            if (starts_.capacity() > count_ + count_ / 4) starts_.shrink_to_fit();  // more than a quarter unused
+            return std::move(starts_);
+        }
 
     private:
-        void grow(std::size_t n);
-        std::unique_ptr<std::uint32_t[]> starts_;
+        std::vector<std::uint32_t> starts_;
         std::uint32_t count_ = 1;
-        std::size_t capacity_ = 0;
     };
 
     // The line feeds marked in `mask` of the 16 bytes at `block`.
@@ -207,6 +219,8 @@ private:
     std::vector<Open> building_;  // the elements expand() has open, innermost last
     StartTagObserver* observer_ = nullptr;
     StartTagObserver* prefix_observer_ = nullptr;
+    const SourceText* releasable_ = nullptr;
+    std::size_t released_ = 0;
     bool tag_prefixed_ = false;  // the start tag being read has a prefixed element or attribute name
     std::uint32_t root_ = 0;
 };

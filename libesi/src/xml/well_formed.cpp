@@ -154,6 +154,7 @@ bool Scanner::comment() {
         if (peek(1) == '-') {
             if (peek(2) == '>') {
                 p_ += 3;
+                if (!scope_) checker_.comments.push_back({static_cast<std::size_t>(start - begin_), static_cast<std::size_t>(p_ - begin_)});
                 return true;
             }
             return fail(p_, "'--' inside a comment (only allowed in the closing '-->')");

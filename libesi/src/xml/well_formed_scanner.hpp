@@ -19,6 +19,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "esi/text_span.hpp"
 #include "esi/xml/well_formed.hpp"
 #include "xml/well_formed_chars.hpp"
 
@@ -185,6 +186,8 @@ public:
     const SourceEncoding encoding;  // what the decoder found (byte-order mark, UTF-16 shape, declaration)
     bool standalone = false;
     bool doctype_seen = false;
+    // The document's comments, from '<' to after '>' (offsets in the text; not those of entities).
+    std::vector<TextSpan> comments;
     // Where the DOCTYPE is: from its '<' to after its '>' (offsets in the text).
     std::size_t doctype_begin = 0;
     std::size_t doctype_end = 0;
