@@ -535,6 +535,42 @@ bool TreeParser::other_markup(std::uint32_t owner, std::uint32_t* last_child) {
 #endif
 }
 
+// The rest of a leaf whose start tag ends before p: a short value (or none) and the end tag
+// "</name>", with nothing in the value that needs a closer look. True when p stood at one; p is
+// then after its end tag and the element is complete. Needs 32 bytes of text after p.
+[[gnu::always_inline]] inline bool TreeParser::leaf(const char*& p, std::uint32_t element, std::string_view name) {
+#if defined(__SSE2__)
+    const char* stop = p;
+    if (*p != '<') {
+        if (static_cast<unsigned char>(*p) <= ' ') return false;  // white space first: the general way
+        const __m128i v = scan::load16(p);
+        const unsigned markup = scan::mask_of(scan::bytes_equal(v, '<'));
+        if (markup == 0) return false;
+        const __m128i control = _mm_cmpeq_epi8(_mm_min_epu8(v, _mm_set1_epi8(0x1F)), v);  // line breaks and tabs included
+        const __m128i look = _mm_or_si128(_mm_or_si128(control, scan::bytes_equal(v, '&')),
+                                          _mm_or_si128(scan::bytes_equal(v, ']'), scan::bytes_equal(v, static_cast<char>(0xEF))));
+        if (scan::mask_of(look) & ((markup & (0u - markup)) - 1)) return false;
+        stop = p + __builtin_ctz(markup);
+    }
+    const std::size_t length = name.size();
+    const char* end_name = stop + 2;
+    if (stop[1] != '/' || static_cast<std::size_t>(end_ - end_name) <= length || end_name[length] != '>' ||
+        !same_bytes(end_name, name.data(), length))
+        return false;
+    Node& n = tree_.node(element);
+    if (stop != p) {
+        n.value = std::string_view(p, static_cast<std::size_t>(stop - p));
+        n.has_value = true;
+    }
+    n.complete = true;
+    p = end_name + length + 1;
+    return true;
+#else
+    (void)p, (void)element, (void)name;
+    return false;
+#endif
+}
+
 // The inner loop of the parse: an element's content, its children's and theirs, built into the
 // tree. The steps nearly every element of a file takes (a run of white space or a short value, a
 // start tag without attributes, an end tag) are inline here, on a local cursor; everything else is
@@ -547,10 +583,12 @@ bool TreeParser::expand(Element element) {
     building_.push_back({top_index, 0});
     const char* p = p_;
     const char* const end = end_;
+    // The short runs and leaves read up to 32 bytes ahead without a bound test.
+    const char* const roomy = end - std::min<std::ptrdiff_t>(32, end - begin_);
     for (;;) {
         Open* top = &building_.back();
         const char* text = p;
-        if (*p != '<' && !(end - p >= 32 && short_run(p, text, top->index, &top->last_child))) {
+        if (*p != '<' && !(p < roomy && short_run(p, text, top->index, &top->last_child))) {
             const Run run = run_to_markup(p);
             p = run.stop;
             if (run.plain) {
@@ -611,9 +649,19 @@ bool TreeParser::expand(Element element) {
             // from the line start, which white space alone separates from it.
             const SourcePos pos = line_start_ > text ? SourcePos{line_starts_.count(), static_cast<std::uint32_t>(p - line_start_) + 1}
                                                      : position_at(p);
-            child = tree_.add_element(std::string_view(p + 1, static_cast<std::size_t>(q - p - 1)), parent,
-                                      static_cast<std::uint32_t>(p - begin_), pos);
+            const std::string_view name(p + 1, static_cast<std::size_t>(q - p - 1));
+            child = tree_.add_element(name, parent, static_cast<std::uint32_t>(p - begin_), pos);
             p = q + 1;
+            // A leaf, "<Name>value</Name>" as most elements of an ESI file are, is read to its end
+            // tag right here and never goes on the stack.
+            if (p < roomy && leaf(p, child, name)) {
+                append_child(parent, &top->last_child, child);
+                if (observer_) {
+                    p_ = p;
+                    tell_observers(child, false);
+                }
+                continue;
+            }
         } else {
             p_ = p;
             child = start_tag(parent, empty);

@@ -201,6 +201,7 @@ private:
     };
     Run run_to_markup(const char* p);
     bool short_run(const char*& p, const char*& text, std::uint32_t owner, std::uint32_t* last_child);
+    bool leaf(const char*& p, std::uint32_t element, std::string_view name);
     // Markup other than a tag at p_: comments, processing instructions, CDATA sections (kept under
     // `owner` when there is one), and what is misplaced.
     bool other_markup(std::uint32_t owner, std::uint32_t* last_child);
