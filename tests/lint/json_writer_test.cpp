@@ -49,6 +49,20 @@ TEST(JsonWriter, RandomBytesAreWrittenAsNlohmannWritesThem) {
     }
 }
 
+// Long plain runs (read 16 bytes a step) with an escape, a control character or a non-ASCII
+// byte at every offset, as diagnostic messages and paths have them.
+TEST(JsonWriter, LongStringsWithAnEscapeAtAnyOffsetAreWrittenAsNlohmannWritesThem) {
+    const std::vector<std::string> specials = {"\"", "\\", "\n", std::string("\0", 1), "\x1f", "\x7f", "\xC3\xA9", "\xE2\x82\xAC", "\xFF", "\xE2\x82"};
+    for (std::size_t length = 0; length <= 70; ++length)
+        for (std::size_t at = 0; at <= length; ++at)
+            for (const auto& special : specials) {
+                std::string s(length, 'x');
+                for (std::size_t i = 0; i < length; ++i) s[i] = static_cast<char>('a' + i % 26);
+                s.insert(at, special);
+                ASSERT_EQ(written(s), dumped(ordered_json(s))) << length << " " << at;
+            }
+}
+
 TEST(JsonWriter, ObjectsAndArraysAreLaidOutAsDump2LaysThemOut) {
     esi::report::JsonWriter json;
     json.begin_object();

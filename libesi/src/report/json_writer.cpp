@@ -1,5 +1,9 @@
 #include "report/json_writer.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <charconv>
 
 namespace esi::report {
@@ -92,8 +96,23 @@ void JsonWriter::escaped(std::string_view text) {
     std::size_t i = 0;
     const std::size_t n = text.size();
     while (i < n) {
-        // Runs that need no escape, copied at once.
+        // Runs that need no escape, copied at once; found 16 bytes a step where SSE2 is there
+        // (diagnostic messages and paths are mostly long plain ASCII).
         std::size_t run = i;
+#if defined(__SSE2__)
+        while (n - run >= 16) {
+            const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(text.data() + run));
+            const __m128i control = _mm_cmpeq_epi8(_mm_min_epu8(v, _mm_set1_epi8(0x1F)), v);
+            const __m128i special = _mm_or_si128(_mm_cmpeq_epi8(v, _mm_set1_epi8('"')), _mm_cmpeq_epi8(v, _mm_set1_epi8('\\')));
+            // The sign bits are the bytes from 0x80 on.
+            const unsigned stop = static_cast<unsigned>(_mm_movemask_epi8(_mm_or_si128(control, special)) | _mm_movemask_epi8(v));
+            if (stop != 0) {
+                run += static_cast<std::size_t>(__builtin_ctz(stop));
+                break;
+            }
+            run += 16;
+        }
+#endif
         while (run < n) {
             const auto c = static_cast<unsigned char>(text[run]);
             if (c < 0x20 || c == '"' || c == '\\' || c >= 0x80) break;
