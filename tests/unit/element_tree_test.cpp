@@ -92,7 +92,7 @@ int compare_with_pugixml(const std::string& text, const std::string& what) {
     int elements = 0;
     EXPECT_EQ(difference(root, theirs.document_element(), cursor, elements), "");
 
-    const std::vector<std::uint32_t> lines = parser.take_line_starts();
+    const esi::LineStartList lines = parser.take_line_starts();
     EXPECT_EQ(lines.size(), source.line_count());
     for (std::size_t i = 0; i < std::min(lines.size(), source.line_count()); ++i) {
         if (lines[i] == source.line_start(static_cast<std::uint32_t>(i + 1))) continue;

@@ -10,6 +10,7 @@
 #include <mutex>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "esi/io/read_file.hpp"
@@ -17,6 +18,34 @@
 #include "esi/text_span.hpp"
 
 namespace esi {
+
+// An allocator whose elements are left as they are when a vector grows with resize(): for a
+// list its owner writes element by element (the offsets of line starts the parser finds), the
+// zeroing would be a second pass over it, and the part never written is never touched.
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+    template <class U>
+    struct rebind {
+        using other = UninitializedAllocator<U>;
+    };
+    UninitializedAllocator() = default;
+    template <class U>
+    UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+    template <class U>
+    void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
+// Byte offsets of line starts: 0, then the offset after every '\n'. 32-bit, which halves the
+// index of a big file (6 MB for the 1.5 M lines of a 41 MB catalogue): inputs are limited to
+// esi::max_input_bytes (256 MiB), and decoding them at most triples that. A text of 4 GiB or more
+// would be indexed up to there, its later lines counted as part of the last line indexed.
+using LineStartList = std::vector<std::uint32_t, UninitializedAllocator<std::uint32_t>>;
 
 class SourceText {
 public:
@@ -52,7 +81,7 @@ public:
     // Installs the index of line starts (0, then the offset after every '\n') that a pass over the
     // text already found, instead of a pass of its own on first use; nothing when the index is
     // built already.
-    void adopt_line_starts(std::vector<std::uint32_t> starts) const;
+    void adopt_line_starts(LineStartList starts) const;
     // The comments of the text ("<!--" to "-->"), as the reader found them; null when unknown (a
     // text no parser read). Inline suppressions are looked for in them only.
     void adopt_comments(std::vector<TextSpan> comments) const { comments_ = std::move(comments), comments_known_ = true; }
@@ -60,14 +89,10 @@ public:
 
 private:
     friend class PositionCursor;
-    // Offsets of line starts are 32-bit, which halves the index of a big file (6 MB for the
-    // 1.5 M lines of a 41 MB catalogue): inputs are limited to esi::max_input_bytes (256 MiB), and
-    // decoding them at most triples that. A text of 4 GiB or more would be indexed up to there, its
-    // later lines counted as part of the last line indexed.
-    using LineStart = std::uint32_t;
+    using LineStart = LineStartList::value_type;
     // Built on first use, once: the reader's PositionCursor and the quoting of diagnostics'
     // lines share it.
-    const std::vector<LineStart>& line_starts() const;
+    const LineStartList& line_starts() const;
 
     std::string path_;
     std::string owned_;  // the text, when it is a string of its own
@@ -76,7 +101,7 @@ private:
     mutable std::vector<TextSpan> comments_;
     mutable bool comments_known_ = false;
     mutable std::once_flag index_once_;
-    mutable std::vector<LineStart> line_starts_;
+    mutable LineStartList line_starts_;
 };
 
 // Counting helpers over UTF-8 text, eight bytes at a time.
@@ -94,7 +119,7 @@ public:
 
 private:
     const SourceText& source_;
-    const std::vector<SourceText::LineStart>& line_starts_;
+    const LineStartList& line_starts_;
     std::size_t line_ = 0;  // index in line_starts_ of the line of the previous offset
     std::size_t last_offset_ = 0;
     std::uint32_t last_column_ = 1;

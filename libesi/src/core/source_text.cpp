@@ -62,7 +62,7 @@ namespace {
 // bytes in vendor files), so a memchr call per line spent most of its ~55 instructions on the
 // call and its set-up; comparing 16 bytes at a time and taking the newlines from the bit mask
 // costs a few instructions per block plus two per line.
-void append_line_starts(const char* text, std::size_t end, std::vector<std::uint32_t>& starts) {
+void append_line_starts(const char* text, std::size_t end, LineStartList& starts) {
     std::size_t i = 0;
 #if defined(__SSE2__)
     const __m128i newline = _mm_set1_epi8('\n');
@@ -81,7 +81,7 @@ void append_line_starts(const char* text, std::size_t end, std::vector<std::uint
 
 }  // namespace
 
-const std::vector<SourceText::LineStart>& SourceText::line_starts() const {
+const LineStartList& SourceText::line_starts() const {
     static_assert(std::is_same_v<LineStart, std::uint32_t>);
     std::call_once(index_once_, [this] {
         // Vendor files have lines of 25 to 40 bytes; the index is trimmed to size afterwards, as
@@ -95,7 +95,7 @@ const std::vector<SourceText::LineStart>& SourceText::line_starts() const {
     return line_starts_;
 }
 
-void SourceText::adopt_line_starts(std::vector<std::uint32_t> starts) const {
+void SourceText::adopt_line_starts(LineStartList starts) const {
     std::call_once(index_once_, [&] { line_starts_ = std::move(starts); });
 }
 

@@ -201,7 +201,7 @@ SourcePos TreeParser::position_of(const char* p) {
     return SourcePos{static_cast<std::uint32_t>(line), column + 1};
 }
 
-std::vector<std::uint32_t> TreeParser::take_line_starts() { return line_starts_.take(); }
+LineStartList TreeParser::take_line_starts() { return line_starts_.take(); }
 
 Element TreeParser::root() {
     const char* from = p_;

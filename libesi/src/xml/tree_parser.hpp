@@ -119,7 +119,7 @@ public:
     std::vector<TextSpan> take_comments() { return std::move(checker.comments); }
     // After finish(): the line starts of the whole text (0, then the offset after every '\n'), for
     // SourceText.
-    std::vector<std::uint32_t> take_line_starts();
+    LineStartList take_line_starts();
 
 private:
     // An element being built by expand(), and its last child so far.
@@ -133,7 +133,8 @@ private:
 
     // Line starts found so far: 0, then the offset after every '\n'. A block of 16 bytes holds at
     // most 16 line feeds, so room is made once per block and each start is one store. The starts
-    // are kept in the vector SourceText adopts, sized ahead and cut to length at the end.
+    // are kept in the list SourceText adopts, sized ahead (without zeroing it: the part beyond
+    // the last line is never touched, so it is not trimmed either) and cut to length at the end.
     class LineStarts {
     public:
         explicit LineStarts(std::size_t expected) : starts_(std::max<std::size_t>(expected, 64)) { starts_[0] = 0; }
@@ -143,14 +144,13 @@ private:
         void add(std::uint32_t offset) { starts_[count_++] = offset; }
         [[nodiscard]] std::uint32_t count() const { return count_; }
         [[nodiscard]] std::uint32_t operator[](std::size_t i) const { return starts_[i]; }
-        std::vector<std::uint32_t> take() {
+        LineStartList take() {
             starts_.resize(count_);
-            if (starts_.capacity() > count_ + count_ / 4) starts_.shrink_to_fit();  // more than a quarter unused
             return std::move(starts_);
         }
 
     private:
-        std::vector<std::uint32_t> starts_;
+        LineStartList starts_;
         std::uint32_t count_ = 1;
     };
 
