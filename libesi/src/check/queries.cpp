@@ -42,33 +42,6 @@ std::string_view to_string(SmRole role) {
     return "unknown";
 }
 
-DictionaryIndex::DictionaryIndex(const Dictionary* dictionary, const DataTypeIndex& types) : dictionary_(dictionary), types_(types) {
-    if (!dictionary) return;
-    objects_.reserve(dictionary->objects.size());
-    for (const auto& o : dictionary->objects) objects_.emplace(o.index, &o);
-}
-
-const Object* DictionaryIndex::object(std::uint32_t index) const {
-    const auto it = objects_.find(index);
-    return it == objects_.end() ? nullptr : it->second;
-}
-
-const ObjectLayout* DictionaryIndex::layout(std::uint32_t index) const {
-    const Object* o = object(index);
-    return o ? &layout(*o) : nullptr;
-}
-
-const ObjectLayout& DictionaryIndex::layout(const Object& object) const {
-    auto it = layouts_.find(&object);
-    if (it == layouts_.end()) it = layouts_.emplace(&object, layout_of(types_, object)).first;
-    return it->second;  // unordered_map nodes do not move: the reference stays valid
-}
-
-const ObjectEntry* DictionaryIndex::entry(std::uint32_t index, std::uint32_t subindex) const {
-    const ObjectLayout* l = layout(index);
-    return l ? l->entry(subindex) : nullptr;
-}
-
 std::optional<std::uint64_t> default_integer(const ObjectEntry& entry) {
     if (!entry.info) return std::nullopt;
     if (entry.info->default_value) return entry.info->default_value->bits();
