@@ -1,8 +1,6 @@
 // Rules of the od area on the objects of a Dictionary: presence of the mandatory objects,
 // duplicates, flag values, and default/minimum/maximum values against the entry they belong to.
-#include <initializer_list>
 #include <string>
-#include <unordered_map>
 
 #include "check/areas.hpp"
 #include "check/od_scope.hpp"
@@ -37,11 +35,13 @@ void for_each_flags(const Dictionary& dictionary, F&& f) {
         if (object.flags) f(*object.flags);
 }
 
-bool one_of(std::string_view value, std::initializer_list<std::string_view> allowed) {
-    for (auto a : allowed)
-        if (value == a) return true;
-    return false;
+// The values ETG.2000 ObjectType/Flags allows. Compared with literals, which the compiler turns
+// into a length test and one load: every object and SubItem of a Dictionary has flags.
+bool is_access(std::string_view value) { return value == "ro" || value == "rw" || value == "wo"; }
+bool is_pdo_mapping(std::string_view value) {
+    return value == "R" || value == "T" || value == "RT" || value == "TR" || value == "r" || value == "t" || value == "rt" || value == "tr";
 }
+bool is_category(std::string_view value) { return value == "m" || value == "o" || value == "c"; }
 
 // A value of an entry, where its default, minimum and maximum come from.
 struct EntryValues {
@@ -89,10 +89,12 @@ void check_lengths(RuleContext& context, const EntryValues& values, const EntryN
                           basic->type_class == TypeClass::unicode_string ||
                           (trim(type_name).starts_with("ARRAY") && parse_type_name(type_name).kind == TypeName::Kind::array);
     const auto check = [&](const std::optional<HexData>& data, std::string_view element) {
-        // Empty data (<DefaultData/>) gives no value at all.
-        if (!data || !data->valid() || data->text.empty()) return;
+        // Empty data (<DefaultData/>) gives no value at all, nor does data that is not hex. The
+        // length is tested first: it is right for nearly every entry, and validity costs a look
+        // at every digit.
+        if (!data || data->text.empty()) return;
         const std::uint64_t length = data->byte_length();
-        if (length == bytes || (variable && length <= bytes)) return;
+        if (length == bytes || (variable && length <= bytes) || !data->valid()) return;
         context.report(data->pos.line ? data->pos : fallback,
                        std::string(element) + " of " + name.text() + " is " + std::to_string(length) + (length == 1 ? " byte" : " bytes") +
                            " but the entry (" + std::string(type_name) + ", " + bits_text(bits) + ") is " +
@@ -119,7 +121,8 @@ Reading read_values(const EntryValues& values, const ValueFormat& format, bool a
     const std::uint64_t bytes = (format.bit_size + 7) / 8;
     const auto pick = [&](const std::optional<Number>& value, const std::optional<HexData>& data) -> std::optional<Number> {
         if (value) return as_bit_patterns ? normalized(*value, format) : *value;
-        if (data && data->valid() && data->byte_length() == bytes) return number_from_data(*data, format);
+        // number_from_data reads nothing from data that is not hex.
+        if (data && data->byte_length() == bytes) return number_from_data(*data, format);
         return std::nullopt;
     };
     Reading r{pick(values.default_value, values.default_data), pick(values.min_value, values.min_data),
@@ -148,6 +151,10 @@ std::optional<std::string> range_violation(const Reading& r, const ValueFormat& 
 
 void check_range(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
                  const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+    // Without MinValue/MaxValue (or their data) only a DefaultValue can be out of range: a default
+    // given as data is read as a bit pattern of the entry's width, which always fits the type.
+    // Most entries of real dictionaries are such, and are not read at all.
+    if (!values.default_value && !values.min_value && !values.min_data && !values.max_value && !values.max_data) return;
     if (!basic || !basic->is_integer()) return;
     const std::uint64_t width = bits > 0 ? bits : basic->bit_size;
     if (width == 0 || width > 64) return;
@@ -256,16 +263,25 @@ constexpr Rule od_mandatory_object_offline{
 
 // ---- od-duplicate-object --------------------------------------------------------------------
 
+// The first Object of that index that has an Index element (one without is the reader's finding).
+const Object* first_declared(const Dictionary& dictionary, const DictionaryIndex& objects, std::uint32_t index) {
+    const Object* first = objects.object(index);
+    if (first && first->index_pos.line != 0) return first;
+    for (const auto& object : dictionary.objects)
+        if (object.index == index && object.index_pos.line != 0) return &object;
+    return nullptr;
+}
+
 void check_duplicate_object(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
-        std::unordered_map<std::uint32_t, const Object*> seen;
+        const DictionaryIndex& objects = context.cache().objects(scope.dictionary);
         for (const auto& object : scope.dictionary->objects) {
             if (object.index_pos.line == 0) continue;  // no Index: reported by the reader
-            const auto [it, inserted] = seen.emplace(object.index, &object);
-            if (inserted) continue;
+            const Object* first = first_declared(*scope.dictionary, objects, object.index);
+            if (first == &object) continue;
             context.report(object.index_pos, "Object " + object_address(object.index) + " is declared twice in this Dictionary",
-                           {context.note(it->second->index_pos, "first declared here")},
-                           remove_identical_copy(document, it->second->pos, object.pos, "remove the identical copy of the Object"));
+                           {context.note(first->index_pos, "first declared here")},
+                           remove_identical_copy(document, first->pos, object.pos, "remove the identical copy of the Object"));
         }
     }
 }
@@ -289,12 +305,11 @@ constexpr Rule od_duplicate_object{
 void check_flags_value(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         for_each_flags(*scope.dictionary, [&](const ObjectFlags& flags) {
-            // ETG.2000 ObjectType/Flags enumerations.
-            if (flags.access && !one_of(*flags.access, {"ro", "rw", "wo"}))
+            if (flags.access && !is_access(*flags.access))
                 context.report(flags.pos, "Access '" + *flags.access + "' is not ro, rw or wo");
-            if (flags.pdo_mapping && !one_of(*flags.pdo_mapping, {"R", "T", "RT", "TR", "r", "t", "rt", "tr"}))
+            if (flags.pdo_mapping && !is_pdo_mapping(*flags.pdo_mapping))
                 context.report(flags.pos, "PdoMapping '" + *flags.pdo_mapping + "' is not R, T, RT or TR (lower case for optional mapping)");
-            if (flags.category && !one_of(*flags.category, {"m", "o", "c"}))
+            if (flags.category && !is_category(*flags.category))
                 context.report(flags.pos, "Category '" + *flags.category + "' is not m, o or c");
         });
     }
