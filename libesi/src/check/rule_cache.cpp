@@ -28,4 +28,11 @@ const DataTypeSizes& RuleCache::type_sizes(const Dictionary& dictionary) {
     return *e.type_sizes;
 }
 
+const std::vector<TypeReferenceFault>& RuleCache::type_reference_faults(const Dictionary& dictionary) {
+    PerDictionary& e = entry(&dictionary);
+    if (!e.type_reference_faults)
+        e.type_reference_faults = std::make_unique<std::vector<TypeReferenceFault>>(rules::type_reference_faults(dictionary, *e.types));
+    return *e.type_reference_faults;
+}
+
 }  // namespace esi::rules

@@ -12,6 +12,7 @@
 #include "check/od_type_sizes.hpp"
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
+#include "check/od_type_references.hpp"
 #include "check/rule_cache.hpp"
 #include "check/source_edit.hpp"
 #include "esi/data_types.hpp"
@@ -20,28 +21,6 @@
 namespace esi::rules {
 
 namespace {
-
-// A place where a Dictionary names a type: an Object's Type, a SubItem's Type, a BaseType.
-struct TypeReference {
-    std::string_view name;
-    SourcePos pos;
-    const Object* object = nullptr;
-    const DataType* data_type = nullptr;
-    const DataTypeSubItem* sub_item = nullptr;
-};
-
-template <class F>
-void for_each_type_reference(const Dictionary& dictionary, F&& f) {
-    for (const auto& type : dictionary.data_types) {
-        if (type.base_type && !trim(*type.base_type).empty())
-            f(TypeReference{trim(*type.base_type), type.pos, nullptr, &type, nullptr});
-        for (const auto& item : type.sub_items)
-            if (!trim(item.type).empty()) f(TypeReference{trim(item.type), item.pos, nullptr, &type, &item});
-    }
-    for (const auto& object : dictionary.objects)
-        if (!trim(object.type).empty())
-            f(TypeReference{trim(object.type), object.type_pos.line ? object.type_pos : object.pos, &object, nullptr, nullptr});
-}
 
 std::string describe(const TypeReference& ref) {
     if (ref.object) return "Object " + object_address(ref.object->index);
@@ -79,12 +58,9 @@ std::string also_used(std::size_t count) {
 
 void check_type_unresolved(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex& types = context.cache().types(scope.dictionary);
         NameFindings findings;
-        for_each_type_reference(*scope.dictionary, [&](const TypeReference& ref) {
-            std::string_view culprit;
-            if (types.status(ref.name, &culprit) == TypeNameStatus::unresolved) findings.add(ref, culprit);
-        });
+        for (const auto& fault : context.cache().type_reference_faults(*scope.dictionary))
+            if (fault.status == TypeNameStatus::unresolved) findings.add(fault.reference, fault.culprit);
         for (const auto& f : findings.entries) {
             std::string message = describe(f.first) + " uses type '" + std::string(f.first.name) + "', ";
             message += f.culprit != f.first.name ? "whose element type '" + f.culprit + "'" : std::string("which");
@@ -115,12 +91,9 @@ void check_nonstandard_type_name(const EsiDocument& document, RuleContext& conte
     for (const auto& scope : dictionary_scopes(document)) {
         // A Dictionary may define a DataType of any name, INT8 included (Beckhoff's SoE
         // dictionaries do); only names nothing defines are faults.
-        const TypeIndex& types = context.cache().types(scope.dictionary);
         NameFindings findings;
-        for_each_type_reference(*scope.dictionary, [&](const TypeReference& ref) {
-            std::string_view culprit;
-            if (types.status(ref.name, &culprit) == TypeNameStatus::nonstandard) findings.add(ref, culprit);
-        });
+        for (const auto& fault : context.cache().type_reference_faults(*scope.dictionary))
+            if (fault.status == TypeNameStatus::nonstandard) findings.add(fault.reference, fault.culprit);
         for (const auto& f : findings.entries)
             context.report(f.first.pos, describe(f.first) + " uses type '" + f.culprit + "', which is not an ESI type name; the standard name is '" +
                                             std::string(standard_type_name_for(f.culprit)) + "'" + also_used(f.count));

@@ -1,0 +1,49 @@
+#pragma once
+// The places where a Dictionary names a type (an Object's Type, a SubItem's Type, a BaseType)
+// and those whose name does not resolve. od-type-unresolved and od-nonstandard-type-name judge
+// the same references: the names are looked up once (RuleCache::type_reference_faults) and each
+// rule reports its kind of fault.
+
+#include <string_view>
+#include <vector>
+
+#include "check/od_type_index.hpp"
+#include "esi/model/dictionary.hpp"
+#include "esi/number.hpp"
+
+namespace esi::rules {
+
+struct TypeReference {
+    std::string_view name;  // trimmed
+    SourcePos pos;
+    const Object* object = nullptr;
+    const DataType* data_type = nullptr;
+    const DataTypeSubItem* sub_item = nullptr;
+};
+
+// Calls f(TypeReference) for every non-empty type name of the Dictionary: BaseTypes and SubItem
+// types of each DataType, then the Objects' types, in the order of the file.
+template <class F>
+void for_each_type_reference(const Dictionary& dictionary, F&& f) {
+    for (const auto& type : dictionary.data_types) {
+        if (type.base_type && !trim(*type.base_type).empty())
+            f(TypeReference{trim(*type.base_type), type.pos, nullptr, &type, nullptr});
+        for (const auto& item : type.sub_items)
+            if (!trim(item.type).empty()) f(TypeReference{trim(item.type), item.pos, nullptr, &type, &item});
+    }
+    for (const auto& object : dictionary.objects)
+        if (!trim(object.type).empty())
+            f(TypeReference{trim(object.type), object.type_pos.line ? object.type_pos : object.pos, &object, nullptr, nullptr});
+}
+
+// A reference whose name is not resolved (TypeIndex::status), with the part of the name at fault.
+struct TypeReferenceFault {
+    TypeReference reference;
+    TypeNameStatus status = TypeNameStatus::unresolved;  // unresolved or nonstandard
+    std::string_view culprit;
+};
+
+// The faulty references of a Dictionary, in the order of for_each_type_reference.
+[[nodiscard]] std::vector<TypeReferenceFault> type_reference_faults(const Dictionary& dictionary, const TypeIndex& types);
+
+}  // namespace esi::rules
