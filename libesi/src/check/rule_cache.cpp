@@ -16,10 +16,15 @@ const DictionaryIndex& RuleCache::objects(const Dictionary* dictionary) {
     return *e.objects;
 }
 
-EntryTypes& RuleCache::entry_types(const Dictionary* dictionary) {
-    PerDictionary& e = entry(dictionary);
-    if (!e.entry_types) e.entry_types = std::make_unique<EntryTypes>(*e.types);
-    return *e.entry_types;
+PdoEntryFacts& RuleCache::pdo_entries(const PdoScope& scope) {
+    std::unique_ptr<PdoEntryFacts>& facts = pdo_entries_[scope.rx_pdos];
+    if (!facts) {
+        const DictionaryIndex& index = objects(scope.dictionary);
+        PerDictionary& e = entry(scope.dictionary);
+        if (!e.entry_types) e.entry_types = std::make_unique<EntryTypes>(*e.types);
+        facts = std::make_unique<PdoEntryFacts>(scope, *e.entry_types, index);
+    }
+    return *facts;
 }
 
 const DataTypeSizes& RuleCache::type_sizes(const Dictionary& dictionary) {

@@ -1,9 +1,10 @@
 #pragma once
 // What several rules compute about the same Dictionary, computed once per lint run: its
 // DataTypes by name (with BaseType loops), its objects by index and their layouts, the type
-// references whose names do not resolve. Rules take these from the cache (RuleContext::cache)
-// and never build their own, so each index and each object layout is built at most once per
-// Dictionary and run, however many rules ask.
+// references whose names do not resolve; and for each device and module what its PDO entries'
+// DataTypes mean and which objects they map. Rules take these from the cache
+// (RuleContext::cache) and never build their own, so each index and each object layout is built
+// at most once per Dictionary and run, however many rules ask.
 //
 // A cache belongs to one run of the rules over one document (run_rules) on one thread; the
 // model must not change while it lives.
@@ -14,7 +15,9 @@
 #include "check/od_type_index.hpp"
 #include "check/od_type_references.hpp"
 #include "check/od_type_sizes.hpp"
+#include "check/pdo_entry_facts.hpp"
 #include "check/pdo_entry_type.hpp"
+#include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
 
 namespace esi::rules {
@@ -24,8 +27,8 @@ public:
     // A null Dictionary gives the index of an owner without one: only basic types resolve.
     [[nodiscard]] const TypeIndex& types(const Dictionary* dictionary);
     [[nodiscard]] const DictionaryIndex& objects(const Dictionary* dictionary);
-    // What PDO entries' DataTypes mean for an owner with this Dictionary (or none).
-    [[nodiscard]] EntryTypes& entry_types(const Dictionary* dictionary);
+    // The PDO entries of a device or module, with what their DataTypes mean and what they map.
+    [[nodiscard]] PdoEntryFacts& pdo_entries(const PdoScope& scope);
     // The DataTypes' sizes as their users see them (a Dictionary, not null).
     [[nodiscard]] const DataTypeSizes& type_sizes(const Dictionary& dictionary);
     // The type references whose names do not resolve (a Dictionary, not null).
@@ -42,6 +45,8 @@ private:
     PerDictionary& entry(const Dictionary* dictionary);
 
     std::unordered_map<const Dictionary*, PerDictionary> dictionaries_;
+    // By the owner's RxPdo list, which identifies the device or module.
+    std::unordered_map<const std::vector<Pdo>*, std::unique_ptr<PdoEntryFacts>> pdo_entries_;
 };
 
 }  // namespace esi::rules

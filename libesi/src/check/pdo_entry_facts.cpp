@@ -1,0 +1,34 @@
+#include "check/pdo_entry_facts.hpp"
+
+namespace esi::rules {
+
+PdoEntryFacts::PdoEntryFacts(const PdoScope& scope, EntryTypes& types, const DictionaryIndex& objects) : types_(types), objects_(objects) {
+    std::size_t count = 0;
+    scope.for_each_pdo([&](const Pdo& pdo) { count += pdo.entries.size(); });
+    entries_.reserve(count);
+    scope.for_each_pdo([&](const Pdo& pdo) {
+        for (const auto& entry : pdo.entries) entries_.push_back(Known{.pdo = &pdo, .entry = &entry});
+    });
+}
+
+const EntryType& PdoEntryFacts::type(std::size_t position) {
+    Known& known = entries_[position];
+    if (!known.type) known.type = &types_.of(*known.entry);  // EntryTypes keeps its answers in place
+    return *known.type;
+}
+
+PdoEntryFacts::Known& PdoEntryFacts::looked_up(std::size_t position) {
+    Known& known = entries_[position];
+    if (!known.looked_up) {
+        known.object = objects_.object(known.entry->index);
+        known.target = known.object ? objects_.layout(*known.object).entry(known.entry->effective_subindex()) : nullptr;
+        known.looked_up = true;
+    }
+    return known;
+}
+
+const Object* PdoEntryFacts::object(std::size_t position) { return looked_up(position).object; }
+
+const ObjectEntry* PdoEntryFacts::target(std::size_t position) { return looked_up(position).target; }
+
+}  // namespace esi::rules
