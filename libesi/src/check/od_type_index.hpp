@@ -7,6 +7,7 @@
 #include <optional>
 #include <string_view>
 #include <unordered_set>
+#include <vector>
 
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
@@ -38,14 +39,18 @@ public:
     [[nodiscard]] const BasicType* basic(std::string_view name) const;
     // Whether following BaseType from this DataType comes back to it.
     [[nodiscard]] bool in_base_type_cycle(const DataType& type) const;
+    // Whether `type` (of this Dictionary) is the one find(type.name) answers, the first of its
+    // name; later ones are duplicates. Known for every DataType once the index is built.
+    [[nodiscard]] bool is_first_of_name(const DataType& type) const;
     // The DataTypes by exact name, for resolve_type and layout_of.
     [[nodiscard]] const DataTypeIndex& data_types() const { return data_types_; }
 
 private:
-    void find_cycles();
+    void find_cycles(const Dictionary& dictionary, const std::vector<bool>& indexed);
 
     DataTypeIndex data_types_;
     std::unordered_set<const DataType*> in_cycle_;
+    std::vector<bool> first_of_name_;  // by position in DataTypes
 };
 
 }  // namespace esi::rules

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "check/areas.hpp"
+#include "check/last_name_answer.hpp"
 #include "check/od_layout_faults.hpp"
 #include "check/od_scope.hpp"
 #include "check/od_type_sizes.hpp"
@@ -124,7 +125,7 @@ void check_type_cycle(const EsiDocument& document, RuleContext& context) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
         std::unordered_set<const DataType*> seen;
         for (const auto& type : scope.dictionary->data_types) {
-            if (types.find(type.name) != &type || !types.in_base_type_cycle(type) || seen.count(&type)) continue;
+            if (!types.is_first_of_name(type) || !types.in_base_type_cycle(type) || seen.count(&type)) continue;
             // One finding per loop, at the member that comes first in the file; the loop is
             // walked once.
             std::vector<const DataType*> members;
@@ -301,6 +302,18 @@ constexpr Rule od_array_size{
 
 // ---- od-bitsize -----------------------------------------------------------------------------
 
+// implied_bit_size for the name of a DataType, most of which are plain names (DT1018) that imply
+// nothing: only basic type names, STRING(n) and ARRAY [..] OF names are worth a parse.
+std::optional<std::uint64_t> size_implied_by_name(std::string_view name) {
+    const std::string_view trimmed = trim(name);
+    if (const BasicType* basic = find_basic_type(trimmed)) {
+        if (basic->bit_size == 0) return std::nullopt;
+        return basic->bit_size;
+    }
+    if (!trimmed.starts_with("STRING") && !trimmed.starts_with("ARRAY")) return std::nullopt;
+    return implied_bit_size(name);
+}
+
 void check_bitsize(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
@@ -312,17 +325,21 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
             const DataType* t = types.find(trim(name));
             return t && sizes.own_size_accounts_for_users(*t);
         };
+        LastNameAnswer<std::optional<std::uint64_t>> last_size;
+        const auto bit_size = [&](const std::string& type_name) {
+            return last_size.get(trim(type_name), [&](std::string_view name) { return types.bit_size(name); });
+        };
         for (const auto& type : scope.dictionary->data_types) {
             // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
-            if (type.bit_size > 0 && types.find(type.name) == &type) {
-                if (const std::optional<std::uint64_t> implied = implied_bit_size(type.name); implied && *implied != type.bit_size)
+            if (type.bit_size > 0 && types.is_first_of_name(type)) {
+                if (const std::optional<std::uint64_t> implied = size_implied_by_name(type.name); implied && *implied != type.bit_size)
                     context.report(type.name_pos.line ? type.name_pos : type.pos, "DataType " + type.name + " has BitSize " +
                                                                                       std::to_string(type.bit_size) + " but " + type.name +
                                                                                       " is " + bits_text(*implied));
             }
             for (const auto& item : type.sub_items) {
                 if (item.bit_size == 0 || trim(item.type).empty()) continue;
-                const std::optional<std::uint64_t> bits = types.bit_size(item.type);
+                const std::optional<std::uint64_t> bits = bit_size(item.type);
                 if (!bits || *bits == item.bit_size || type_accounts_for_users(item.type)) continue;
                 context.report(item.pos, "SubItem '" + item.name + "' of DataType " + type.name + " has BitSize " + std::to_string(item.bit_size) +
                                              " but its type " + std::string(trim(item.type)) + " is " + bits_text(*bits));
@@ -330,7 +347,7 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
         }
         for (const auto& object : scope.dictionary->objects) {
             if (object.bit_size == 0 || object.bit_size_pos.line == 0 || trim(object.type).empty()) continue;
-            const std::optional<std::uint64_t> bits = types.bit_size(object.type);
+            const std::optional<std::uint64_t> bits = bit_size(object.type);
             if (!bits || *bits == object.bit_size || type_accounts_for_users(object.type)) continue;
             context.report(object.bit_size_pos, "Object " + object_address(object.index) + " has BitSize " + std::to_string(object.bit_size) +
                                                     " but its type " + std::string(trim(object.type)) + " is " + bits_text(*bits));
@@ -361,8 +378,9 @@ void check_duplicate_datatype(const EsiDocument& document, RuleContext& context)
     for (const auto& scope : dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
+            if (types.is_first_of_name(type)) continue;
             const DataType* first = types.find(type.name);
-            if (!first || first == &type) continue;
+            if (!first) continue;
             context.report(type.name_pos.line ? type.name_pos : type.pos,
                            "DataType " + type.name + " is defined twice in this Dictionary; masters use one of the definitions",
                            {context.note(first->name_pos.line ? first->name_pos : first->pos, "first defined here")},
