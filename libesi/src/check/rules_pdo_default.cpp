@@ -146,32 +146,31 @@ void check_mapping_default(const EsiDocument& document, RuleContext& context) {
                 if (entry.index_invalid || depends_on_slot(entry)) return;
             // A PDO without entries is a placeholder for a mapping configured at run time.
             if (pdo.entries.empty()) return;
-            const std::optional<std::vector<std::uint64_t>> listed = listed_defaults(*dictionary.layout(pdo.index));
+            std::optional<std::vector<std::uint64_t>> listed = listed_defaults(*dictionary.layout(pdo.index));
             if (!listed) return;
-            std::vector<std::uint64_t> defaults = *listed;
+            std::vector<std::uint64_t> defaults = std::move(*listed);
             std::vector<std::uint64_t> declared_values;
+            declared_values.reserve(pdo.entries.size());
             for (const auto& entry : pdo.entries) declared_values.push_back(mapping_value(entry));
             // Trailing padding (rounding the PDO up to whole bytes) is left out on one side by some
             // vendors (Beckhoff EL2xxx: four BOOLs in the ESI, plus a 4-bit gap in 0x1600).
             strip_trailing_padding(defaults);
             strip_trailing_padding(declared_values);
-            const std::string pdo_name = std::string(pdo.element_name()) + " " + object_address(pdo.index);
-            const std::vector<DiagnosticNote> notes = {context.note(pdo.pos, pdo_name + " is declared here")};
+            const auto pdo_name = [&] { return std::string(pdo.element_name()) + " " + object_address(pdo.index); };
+            const auto report = [&](const std::string& message) {
+                context.report(info_or_object(*object), message, {context.note(pdo.pos, pdo_name() + " is declared here")});
+            };
             const std::size_t common = std::min(defaults.size(), declared_values.size());
             for (std::size_t k = 0; k < common; ++k) {
                 const std::uint64_t declared = declared_values[k];
                 if (defaults[k] == declared) continue;
-                context.report(info_or_object(*object),
-                               "the default of mapping object " + object_address(pdo.index) + " maps " + mapping_text(defaults[k]) +
-                                   " as entry " + std::to_string(k + 1) + ", but " + pdo_name + " lists " + mapping_text(declared),
-                               notes);
+                report("the default of mapping object " + object_address(pdo.index) + " maps " + mapping_text(defaults[k]) + " as entry " +
+                       std::to_string(k + 1) + ", but " + pdo_name() + " lists " + mapping_text(declared));
                 return;
             }
             if (defaults.size() == declared_values.size()) return;
-            context.report(info_or_object(*object), "the default of mapping object " + object_address(pdo.index) + " maps " +
-                                                        std::to_string(defaults.size()) + " entries, but " + pdo_name + " lists " +
-                                                        std::to_string(declared_values.size()),
-                           notes);
+            report("the default of mapping object " + object_address(pdo.index) + " maps " +
+                   std::to_string(defaults.size()) + " entries, but " + pdo_name() + " lists " + std::to_string(declared_values.size()));
         });
     }
 }
