@@ -78,27 +78,34 @@ struct EntryName {
     }
 };
 
+// The length check of one DefaultData/MinData/MaxData whose byte count differs from the entry's
+// size (`bytes`): strings and byte arrays may be given shorter than their maximum length, and data
+// that is not hex gives no value at all.
+void check_data_length(RuleContext& context, const HexData& data, std::string_view element, const EntryName& name,
+                       std::string_view type_name, const BasicType* basic, std::uint64_t bits, SourcePos fallback) {
+    const std::uint64_t bytes = (bits + 7) / 8;
+    const std::uint64_t length = data.byte_length();
+    // (Only a name starting with ARRAY can parse as an array; the test spares a parse.)
+    const bool variable = !basic || basic->type_class == TypeClass::visible_string || basic->type_class == TypeClass::octet_string ||
+                          basic->type_class == TypeClass::unicode_string ||
+                          (trim(type_name).starts_with("ARRAY") && parse_type_name(type_name).kind == TypeName::Kind::array);
+    if ((variable && length <= bytes) || !data.valid()) return;
+    context.report(data.pos.line ? data.pos : fallback,
+                   std::string(element) + " of " + name.text() + " is " + std::to_string(length) + (length == 1 ? " byte" : " bytes") +
+                       " but the entry (" + std::string(type_name) + ", " + bits_text(bits) + ") is " + (variable ? "at most " : "") +
+                       std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes"));
+}
+
 // Length checks of DefaultData/MinData/MaxData and DefaultString for an entry of `bits` bits.
 void check_lengths(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
                    const BasicType* basic, std::uint64_t bits, SourcePos fallback) {
     if (bits == 0) return;
     const std::uint64_t bytes = (bits + 7) / 8;
-    // Strings and byte arrays may be given shorter than their maximum length.
-    // (Only a name starting with ARRAY can parse as an array; the test spares a parse per entry.)
-    const bool variable = !basic || basic->type_class == TypeClass::visible_string || basic->type_class == TypeClass::octet_string ||
-                          basic->type_class == TypeClass::unicode_string ||
-                          (trim(type_name).starts_with("ARRAY") && parse_type_name(type_name).kind == TypeName::Kind::array);
     const auto check = [&](const std::optional<HexData>& data, std::string_view element) {
-        // Empty data (<DefaultData/>) gives no value at all, nor does data that is not hex. The
-        // length is tested first: it is right for nearly every entry, and validity costs a look
-        // at every digit.
-        if (!data || data->text.empty()) return;
-        const std::uint64_t length = data->byte_length();
-        if (length == bytes || (variable && length <= bytes) || !data->valid()) return;
-        context.report(data->pos.line ? data->pos : fallback,
-                       std::string(element) + " of " + name.text() + " is " + std::to_string(length) + (length == 1 ? " byte" : " bytes") +
-                           " but the entry (" + std::string(type_name) + ", " + bits_text(bits) + ") is " +
-                           (variable ? "at most " : "") + std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes"));
+        // Empty data (<DefaultData/>) gives no value at all. Nearly every value has the entry's
+        // length, which is all this tests; the rest is check_data_length's.
+        if (!data || data->text.empty() || data->byte_length() == bytes) return;
+        check_data_length(context, *data, element, name, type_name, basic, bits, fallback);
     };
     check(values.default_data, "DefaultData");
     check(values.min_data, "MinData");
