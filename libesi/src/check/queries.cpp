@@ -6,6 +6,9 @@ namespace esi::rules {
 
 std::vector<const Device*> all_devices(const EsiDocument& document) {
     std::vector<const Device*> out;
+    std::size_t count = 0;
+    for (const auto& info : document.infos) count += info.devices.size();
+    out.reserve(count);  // most rules start with this list: one allocation for it
     for (const auto& info : document.infos)
         for (const auto& device : info.devices) out.push_back(&device);
     return out;

@@ -2,8 +2,7 @@
 // references, duplicates, Exclude references and the 8-bit limits of the CoE mapping and assignment
 // objects.
 #include <algorithm>
-#include <map>
-#include <unordered_set>
+#include <vector>
 
 #include "check/areas.hpp"
 #include "check/od_text.hpp"
@@ -235,16 +234,42 @@ bool index_names_one_mapping_object(const PdoScope& scope, const Pdo& a, const P
     return !scope.device || (scope.device->mailbox && scope.device->mailbox->coe);
 }
 
-// Calls f(scope, pdo, first) for every PDO whose index an earlier PDO of its owner already uses.
+// Calls f(scope, pdo, first) for every PDO whose index an earlier PDO of its owner already uses,
+// in the order of the PDOs.
 template <class F>
 void for_each_repeated_index(const EsiDocument& document, F&& f) {
+    // The indexed PDOs of an owner sorted by index and, among equal indices, by their order: a
+    // repeat follows the first of its index. Owners have a handful of PDOs and repeats are rare,
+    // so sorting one reused array costs less than a map per owner.
+    struct Indexed {
+        std::uint32_t index;
+        std::size_t order;  // in PdoScope::for_each_pdo
+        const Pdo* pdo;
+    };
+    struct Repeat {
+        std::size_t order;
+        const Pdo* pdo;
+        const Pdo* first;
+    };
+    std::vector<Indexed> by_index;
+    std::vector<Repeat> repeats;
     for (const auto& scope : pdo_scopes(document)) {
-        std::map<std::uint32_t, const Pdo*> seen;
+        by_index.clear();
+        std::size_t order = 0;
         scope.for_each_pdo([&](const Pdo& pdo) {
-            if (!has_index(pdo)) return;
-            const auto [it, inserted] = seen.emplace(pdo.index, &pdo);
-            if (!inserted) f(scope, pdo, *it->second);
+            if (has_index(pdo)) by_index.push_back(Indexed{pdo.index, order, &pdo});
+            ++order;
         });
+        std::sort(by_index.begin(), by_index.end(),
+                  [](const Indexed& a, const Indexed& b) { return a.index < b.index || (a.index == b.index && a.order < b.order); });
+        repeats.clear();
+        std::size_t first = 0;  // of the run of equal indices
+        for (std::size_t i = 1; i < by_index.size(); ++i) {
+            if (by_index[i].index != by_index[first].index) first = i;
+            else repeats.push_back(Repeat{by_index[i].order, by_index[i].pdo, by_index[first].pdo});
+        }
+        std::sort(repeats.begin(), repeats.end(), [](const Repeat& a, const Repeat& b) { return a.order < b.order; });
+        for (const Repeat& r : repeats) f(scope, *r.pdo, *r.first);
     }
 }
 
@@ -307,14 +332,16 @@ constexpr Rule pdo_duplicate_label{
 // ---- pdo-exclude-unknown --------------------------------------------------------------------
 
 void check_exclude_unknown(const EsiDocument& document, RuleContext& context) {
+    std::vector<std::uint32_t> indices;  // of the PDOs of one owner
     for (const auto& scope : pdo_scopes(document)) {
-        // Drives list every other PDO as excluded (Beckhoff AX2xxx): look indices up in a set.
-        std::unordered_set<std::uint32_t> indices;
-        scope.for_each_pdo([&](const Pdo& pdo) { indices.insert(pdo.index); });
+        // Drives list every other PDO as excluded (Beckhoff AX2xxx): look indices up in a sorted list.
+        indices.clear();
+        scope.for_each_pdo([&](const Pdo& pdo) { indices.push_back(pdo.index); });
+        std::sort(indices.begin(), indices.end());
         scope.for_each_pdo([&](const Pdo& pdo) {
             for (const auto& exclude : pdo.excludes) {
                 if (exclude.depend_on_slot.value_or(false) || exclude.depend_on_slot_group.value_or(false)) continue;
-                if (indices.count(exclude.index)) continue;
+                if (std::binary_search(indices.begin(), indices.end(), exclude.index)) continue;
                 context.report(exclude.pos, pdo_name(pdo) + " excludes " + object_address(exclude.index) + ", which is not a PDO of this " +
                                                 (scope.device ? "device" : "module"));
             }
