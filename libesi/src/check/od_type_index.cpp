@@ -25,16 +25,16 @@ const BasicType* basic_or_string(std::string_view name) {
 
 TypeIndex::TypeIndex(const Dictionary& dictionary) : TypeIndex(&dictionary) {}
 
-TypeIndex::TypeIndex(const Dictionary* dictionary) : data_types_(dictionary) {
+TypeIndex::TypeIndex(const Dictionary* dictionary) : data_types_(dictionary), names_(dictionary) {
     if (!dictionary) return;
-    // Each DataType is looked up by its name once, here: whether the index holds it (the first of
-    // its exact name) and whether find() answers it (which trims the name it is given, so a
-    // name with blanks around it never finds its own DataType).
+    // Whether the index holds each DataType (the first of its exact name), and whether find()
+    // answers it (find trims the name it is given, so a name with blanks around it never finds
+    // its own DataType).
     const auto& types = dictionary->data_types;
     std::vector<bool> indexed(types.size());
     first_of_name_.resize(types.size());
     for (std::size_t i = 0; i < types.size(); ++i) {
-        indexed[i] = data_types_.find(types[i].name) == &types[i];
+        indexed[i] = names_.is_first_of_name(types[i]);
         first_of_name_[i] = indexed[i] && trim(types[i].name).size() == types[i].name.size();
     }
     find_cycles(*dictionary, indexed);
@@ -92,7 +92,7 @@ const BasicType* TypeIndex::basic(std::string_view name) const {
     return nullptr;  // a BaseType loop, or a chain too long to be real
 }
 
-const DataType* TypeIndex::find(std::string_view name) const { return data_types_.find(trim(name)); }
+const DataType* TypeIndex::find(std::string_view name) const { return names_.find(trim(name)); }
 
 TypeNameStatus TypeIndex::status(std::string_view name, std::string_view* culprit) const {
     name = trim(name);

@@ -9,6 +9,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "check/data_type_names.hpp"
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
 #include "esi/model/object_layout.hpp"
@@ -48,7 +49,8 @@ public:
 private:
     void find_cycles(const Dictionary& dictionary, const std::vector<bool>& indexed);
 
-    DataTypeIndex data_types_;
+    DataTypeIndex data_types_;  // for layouts (layout_of)
+    DataTypeNames names_;       // the same answers, for the rules' many lookups
     std::unordered_set<const DataType*> in_cycle_;
     std::vector<bool> first_of_name_;  // by position in DataTypes
 };
