@@ -2,6 +2,32 @@
 
 namespace esi::rules {
 
+RuleCache::DocumentLists& RuleCache::lists(const EsiDocument& document) {
+    if (listed_document_ != &document) {  // one document per cache; another starts afresh
+        listed_document_ = &document;
+        lists_ = DocumentLists{};
+    }
+    return lists_;
+}
+
+const std::vector<const Device*>& RuleCache::devices(const EsiDocument& document) {
+    DocumentLists& l = lists(document);
+    if (!l.devices) l.devices = all_devices(document);
+    return *l.devices;
+}
+
+const std::vector<DictionaryScope>& RuleCache::dictionary_scopes(const EsiDocument& document) {
+    DocumentLists& l = lists(document);
+    if (!l.dictionary_scopes) l.dictionary_scopes = rules::dictionary_scopes(document);
+    return *l.dictionary_scopes;
+}
+
+const std::vector<PdoScope>& RuleCache::pdo_scopes(const EsiDocument& document) {
+    DocumentLists& l = lists(document);
+    if (!l.pdo_scopes) l.pdo_scopes = rules::pdo_scopes(document);
+    return *l.pdo_scopes;
+}
+
 RuleCache::PerDictionary& RuleCache::entry(const Dictionary* dictionary) {
     PerDictionary& e = dictionaries_[dictionary];
     if (!e.types) e.types = std::make_unique<TypeIndex>(dictionary);

@@ -7,11 +7,15 @@
 // at most once per Dictionary and run, however many rules ask.
 //
 // A cache belongs to one run of the rules over one document (run_rules) on one thread; the
-// model must not change while it lives.
+// model must not change while it lives. It also lists the document's devices, Dictionaries and
+// PDO owners for the rules, once.
 
 #include <memory>
+#include <optional>
+#include <vector>
 #include <unordered_map>
 
+#include "check/od_scope.hpp"
 #include "check/od_type_index.hpp"
 #include "check/od_type_references.hpp"
 #include "check/od_type_sizes.hpp"
@@ -24,6 +28,12 @@ namespace esi::rules {
 
 class RuleCache {
 public:
+    // The document's devices, its Dictionaries with their owners and its PDO owners, listed once
+    // per run: nearly every rule starts from one of these lists.
+    [[nodiscard]] const std::vector<const Device*>& devices(const EsiDocument& document);
+    [[nodiscard]] const std::vector<DictionaryScope>& dictionary_scopes(const EsiDocument& document);
+    [[nodiscard]] const std::vector<PdoScope>& pdo_scopes(const EsiDocument& document);
+
     // A null Dictionary gives the index of an owner without one: only basic types resolve.
     [[nodiscard]] const TypeIndex& types(const Dictionary* dictionary);
     [[nodiscard]] const DictionaryIndex& objects(const Dictionary* dictionary);
@@ -44,6 +54,16 @@ private:
     };
     PerDictionary& entry(const Dictionary* dictionary);
 
+    // The document's lists, made when first asked for.
+    struct DocumentLists {
+        std::optional<std::vector<const Device*>> devices;
+        std::optional<std::vector<DictionaryScope>> dictionary_scopes;
+        std::optional<std::vector<PdoScope>> pdo_scopes;
+    };
+    DocumentLists& lists(const EsiDocument& document);
+
+    const EsiDocument* listed_document_ = nullptr;
+    DocumentLists lists_;
     std::unordered_map<const Dictionary*, PerDictionary> dictionaries_;
     // By the owner's RxPdo list, which identifies the device or module.
     std::unordered_map<const std::vector<Pdo>*, std::unique_ptr<PdoEntryFacts>> pdo_entries_;

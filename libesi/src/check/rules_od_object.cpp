@@ -175,7 +175,7 @@ void check_range(RuleContext& context, const EntryValues& values, const EntryNam
 
 template <class F>
 void for_each_valued_entry(const EsiDocument& document, RuleContext& context, F&& f) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const Dictionary& dictionary = *scope.dictionary;
         const TypeIndex& types = context.cache().types(&dictionary);
         const DictionaryIndex& objects = context.cache().objects(&dictionary);
@@ -280,7 +280,7 @@ const Object* first_declared(const Dictionary& dictionary, const DictionaryIndex
 }
 
 void check_duplicate_object(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const DictionaryIndex& objects = context.cache().objects(scope.dictionary);
         for (const auto& object : scope.dictionary->objects) {
             if (object.index_pos.line == 0) continue;  // no Index: reported by the reader
@@ -310,7 +310,7 @@ constexpr Rule od_duplicate_object{
 // ---- od-flags-value -------------------------------------------------------------------------
 
 void check_flags_value(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         for_each_flags(*scope.dictionary, [&](const ObjectFlags& flags) {
             if (flags.access && !is_access(*flags.access))
                 context.report(flags.pos, "Access '" + *flags.access + "' is not ro, rw or wo");

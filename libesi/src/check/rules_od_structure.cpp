@@ -3,6 +3,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/od_scope.hpp"
 #include "esi/number.hpp"
 
@@ -40,7 +41,7 @@ bool used_by_standard_object(const Dictionary& dictionary, std::string_view type
 }
 
 void check_subindex0_type(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         for (const auto& type : scope.dictionary->data_types) {
             // Only records and array holders (more than one SubItem) have an entry count at sub-index 0.
             if (type.sub_items.size() < 2) continue;

@@ -58,7 +58,7 @@ std::string also_used(std::size_t count) {
 // ---- od-type-unresolved ---------------------------------------------------------------------
 
 void check_type_unresolved(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         NameFindings findings;
         for (const auto& fault : context.cache().type_reference_faults(*scope.dictionary))
             if (fault.status == TypeNameStatus::unresolved) findings.add(fault.reference, fault.culprit);
@@ -89,7 +89,7 @@ constexpr Rule od_type_unresolved{
 // ---- od-nonstandard-type-name ---------------------------------------------------------------
 
 void check_nonstandard_type_name(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         // A Dictionary may define a DataType of any name, INT8 included (Beckhoff's SoE
         // dictionaries do); only names nothing defines are faults.
         NameFindings findings;
@@ -121,7 +121,7 @@ constexpr Rule od_nonstandard_type_name{
 
 void check_type_cycle(const EsiDocument& document, RuleContext& context) {
     const auto before = [](const SourcePos& a, const SourcePos& b) { return a.line < b.line || (a.line == b.line && a.column < b.column); };
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
         std::unordered_set<const DataType*> seen;
         for (const auto& type : scope.dictionary->data_types) {
@@ -163,7 +163,7 @@ constexpr Rule od_type_cycle{
 // ---- od-subitem-layout, od-layout-complete-access -----------------------------------------
 
 void check_subitem_layout(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         for (const auto& type : scope.dictionary->data_types) {
             const LayoutFaults faults = layout_faults(type);
             // Past the end: reported once per DataType, at the first such SubItem in the file.
@@ -258,7 +258,7 @@ constexpr Rule od_layout_complete_access{
 // ---- od-array-size --------------------------------------------------------------------------
 
 void check_array_size(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const DataTypeSizes& sizes = context.cache().type_sizes(*scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
             const ArraySize& size = sizes.array(type);
@@ -315,7 +315,7 @@ std::optional<std::uint64_t> size_implied_by_name(std::string_view name) {
 }
 
 void check_bitsize(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
         const DataTypeSizes& sizes = context.cache().type_sizes(*scope.dictionary);
         // A user's size that differs from a DataType whose own BitSize is the cause (an array
@@ -375,7 +375,7 @@ constexpr Rule od_bitsize{
 // ---- od-duplicate-datatype ------------------------------------------------------------------
 
 void check_duplicate_datatype(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
             if (types.is_first_of_name(type)) continue;

@@ -86,7 +86,7 @@ std::string mapping_text(std::uint64_t value) {
 // ---- pdo-assign-default ---------------------------------------------------------------------
 
 void check_assign_default(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         // Modular devices add module PDOs to the assignment as modules are plugged in.
         if (!scope.device || scope.device->slots || !scope.dictionary) continue;
         const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);
@@ -135,7 +135,7 @@ constexpr Rule pdo_assign_default{
 // ---- pdo-mapping-default --------------------------------------------------------------------
 
 void check_mapping_default(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         if (!scope.device || !scope.dictionary) continue;
         const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);
         scope.for_each_pdo([&](const Pdo& pdo) {

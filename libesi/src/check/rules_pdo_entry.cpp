@@ -15,8 +15,8 @@ namespace esi::rules {
 namespace {
 
 template <class F>
-void for_each_entry(const EsiDocument& document, F&& f) {
-    for (const auto& scope : pdo_scopes(document))
+void for_each_entry(const EsiDocument& document, RuleContext& context, F&& f) {
+    for (const auto& scope : context.cache().pdo_scopes(document))
         scope.for_each_pdo([&](const Pdo& pdo) {
             for (const auto& entry : pdo.entries) f(scope, pdo, entry);
         });
@@ -25,7 +25,7 @@ void for_each_entry(const EsiDocument& document, F&& f) {
 // The same, with what the entry's DataType means under its owner's Dictionary.
 template <class F>
 void for_each_typed_entry(const EsiDocument& document, RuleContext& context, F&& f) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         PdoEntryFacts& entries = context.cache().pdo_entries(scope);
         for (std::size_t i = 0; i < entries.size(); ++i) f(scope, entries.type(i), entries.entry(i));
     }
@@ -140,7 +140,7 @@ constexpr Rule pdo_entry_bitlen_type{
 // ---- pdo-padding-subindex -------------------------------------------------------------------
 
 void check_padding_subindex(const EsiDocument& document, RuleContext& context) {
-    for_each_entry(document, [&](const PdoScope&, const Pdo&, const PdoEntry& entry) {
+    for_each_entry(document, context, [&](const PdoScope&, const Pdo&, const PdoEntry& entry) {
         if (!entry.is_padding() || entry.effective_subindex() == 0) return;
         context.report(entry.pos, "Padding entry (Index 0) has SubIndex " + std::to_string(entry.effective_subindex()) +
                                       "; a gap in a PDO is mapped as #x0000:00 with only its BitLen");
@@ -164,7 +164,7 @@ constexpr Rule pdo_padding_subindex{
 // ---- pdo-padding-bitlen-zero ----------------------------------------------------------------
 
 void check_padding_bitlen_zero(const EsiDocument& document, RuleContext& context) {
-    for_each_entry(document, [&](const PdoScope&, const Pdo& pdo, const PdoEntry& entry) {
+    for_each_entry(document, context, [&](const PdoScope&, const Pdo& pdo, const PdoEntry& entry) {
         // BitLen 0 without a BitLen element is a missing BitLen, which the reader reports.
         if (!entry.is_padding() || entry.bit_len != 0 || entry.bit_len_pos.line == 0) return;
         context.report(entry.bit_len_pos, "Padding entry (Index 0) of " + std::string(pdo.element_name()) + " " + object_address(pdo.index) +
@@ -193,7 +193,7 @@ constexpr Rule pdo_padding_bitlen_zero{
 // ---- pdo-entry-alignment --------------------------------------------------------------------
 
 void check_entry_alignment(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         scope.for_each_pdo([&](const Pdo& pdo) {
             std::uint64_t offset = 0;
             for (const auto& entry : pdo.entries) {

@@ -53,7 +53,7 @@ struct MappedEntry {
 
 template <class F>
 void for_each_mapped_entry(const EsiDocument& document, RuleContext& context, bool complete_dictionaries_only, F&& f) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         if (!scope.dictionary || scope.dictionary->objects.empty()) continue;
         if (complete_dictionaries_only && !scope.dictionary_is_complete) continue;
         const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);

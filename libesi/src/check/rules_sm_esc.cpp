@@ -6,6 +6,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/esc_controller.hpp"
 #include "check/sm_memory.hpp"
 #include "check/sm_roles.hpp"
@@ -111,7 +112,7 @@ void check_boot_strap(const Device& device, std::uint64_t end_of_ram, const std:
 }
 
 void check_address_area(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         std::string because;
         const std::uint64_t end_of_ram = ram_end(*device, because);
         check_sms(*device, end_of_ram, because, context);
@@ -143,7 +144,7 @@ constexpr Rule sm_address_area{
 // ---- sm-count ---------------------------------------------------------------------------------
 
 void check_sm_count(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document))
+    for (const Device* device : context.cache().devices(document))
         report_blocks_past_limit(*device, device->sms, "SmCount", "SyncManagers", "SM", context);
 }
 
