@@ -59,7 +59,9 @@ void TypeIndex::find_cycles(const Dictionary& dictionary, const std::vector<bool
     std::vector<const DataType*> path;
     for (const auto& type : dictionary.data_types) {
         const DataType* start = &type;
-        if (!indexed[position(start)] || state(start) != State::unvisited) continue;  // only the first of a name is indexed
+        // Only the first of a name is indexed; a chain starts at a type with a BaseType (one
+        // without is a chain of its own that ends at once, and chains running into it stop there).
+        if (!type.base_type || !indexed[position(start)] || state(start) != State::unvisited) continue;
         path.clear();
         const DataType* t = start;
         while (t && state(t) == State::unvisited) {

@@ -20,7 +20,10 @@ const EntryType& PdoEntryFacts::type(std::size_t position) {
 PdoEntryFacts::Known& PdoEntryFacts::looked_up(std::size_t position) {
     Known& known = entries_[position];
     if (!known.looked_up) {
-        known.object = objects_.object(known.entry->index);
+        // Neighbouring entries mostly map sub-indices of one object (0x6000:01, 0x6000:02 …).
+        const Known* before = position > 0 ? &entries_[position - 1] : nullptr;
+        known.object = before && before->looked_up && before->entry->index == known.entry->index ? before->object
+                                                                                                 : objects_.object(known.entry->index);
         known.target = known.object ? objects_.layout(*known.object).entry(known.entry->effective_subindex()) : nullptr;
         known.looked_up = true;
     }

@@ -156,12 +156,15 @@ std::optional<std::string> range_violation(const Reading& r, const ValueFormat& 
     return std::nullopt;
 }
 
+// Without MinValue/MaxValue (or their data) only a DefaultValue can be out of range: a default
+// given as data is read as a bit pattern of the entry's width, which always fits the type. Most
+// entries of real dictionaries are such, and are not read at all.
+bool may_be_out_of_range(const EntryValues& values) {
+    return values.default_value || values.min_value || values.min_data || values.max_value || values.max_data;
+}
+
 void check_range(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
                  const BasicType* basic, std::uint64_t bits, SourcePos pos) {
-    // Without MinValue/MaxValue (or their data) only a DefaultValue can be out of range: a default
-    // given as data is read as a bit pattern of the entry's width, which always fits the type.
-    // Most entries of real dictionaries are such, and are not read at all.
-    if (!values.default_value && !values.min_value && !values.min_data && !values.max_value && !values.max_data) return;
     if (!basic || !basic->is_integer()) return;
     const std::uint64_t width = bits > 0 ? bits : basic->bit_size;
     if (width == 0 || width > 64) return;
@@ -365,7 +368,7 @@ constexpr Rule od_default_length{
 void check_default_range(const EsiDocument& document, RuleContext& context) {
     for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
                                                  const BasicType* basic, std::uint64_t bits, SourcePos pos) {
-        check_range(context, values, name, type_name, basic, bits, pos);
+        if (may_be_out_of_range(values)) check_range(context, values, name, type_name, basic, bits, pos);
     });
 }
 

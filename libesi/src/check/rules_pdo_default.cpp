@@ -33,7 +33,12 @@ std::optional<std::uint64_t> entry_default(const ObjectEntry& entry) {
 // The defaults of sub-indices 1..n of an array/record object, n being the default of
 // sub-index 0 when given. nullopt when the object states no such defaults.
 std::optional<std::vector<std::uint64_t>> listed_defaults(const ObjectLayout& layout) {
-    std::array<const ObjectEntry*, 256> by_subindex{};
+    // The first entry of each sub-index; only the part up to the highest sub-index is cleared.
+    std::array<const ObjectEntry*, 256> by_subindex;
+    std::uint32_t highest = 0;
+    for (const auto& e : layout.entries)
+        if (e.subindex < by_subindex.size()) highest = std::max(highest, e.subindex);
+    std::fill(by_subindex.begin(), by_subindex.begin() + highest + 1, nullptr);
     for (const auto& e : layout.entries)
         if (e.subindex < by_subindex.size() && !by_subindex[e.subindex]) by_subindex[e.subindex] = &e;
     const ObjectEntry* count_entry = by_subindex[0];
@@ -42,7 +47,7 @@ std::optional<std::vector<std::uint64_t>> listed_defaults(const ObjectLayout& la
     bool any = count.has_value();
     for (std::uint32_t sub = 1; sub <= 255; ++sub) {
         if (count && sub > *count) break;
-        const ObjectEntry* e = by_subindex[sub];
+        const ObjectEntry* e = sub <= highest ? by_subindex[sub] : nullptr;
         const std::optional<std::uint64_t> value = e ? entry_default(*e) : std::nullopt;
         if (!value) {
             if (count) return std::nullopt;  // counted, but a counted entry has no default
