@@ -26,14 +26,14 @@ struct TypeReference {
 template <class F>
 void for_each_type_reference(const Dictionary& dictionary, F&& f) {
     for (const auto& type : dictionary.data_types) {
-        if (type.base_type && !trim(*type.base_type).empty())
-            f(TypeReference{trim(*type.base_type), type.pos, nullptr, &type, nullptr});
+        if (type.base_type)
+            if (const std::string_view base = trim(*type.base_type); !base.empty()) f(TypeReference{base, type.pos, nullptr, &type, nullptr});
         for (const auto& item : type.sub_items)
-            if (!trim(item.type).empty()) f(TypeReference{trim(item.type), item.pos, nullptr, &type, &item});
+            if (const std::string_view name = trim(item.type); !name.empty()) f(TypeReference{name, item.pos, nullptr, &type, &item});
     }
     for (const auto& object : dictionary.objects)
-        if (!trim(object.type).empty())
-            f(TypeReference{trim(object.type), object.type_pos.line ? object.type_pos : object.pos, &object, nullptr, nullptr});
+        if (const std::string_view name = trim(object.type); !name.empty())
+            f(TypeReference{name, object.type_pos.line ? object.type_pos : object.pos, &object, nullptr, nullptr});
 }
 
 // A reference whose name is not resolved (TypeIndex::status), with the part of the name at fault.

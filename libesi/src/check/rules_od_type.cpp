@@ -326,8 +326,8 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
             return t && sizes.own_size_accounts_for_users(*t);
         };
         LastNameAnswer<std::optional<std::uint64_t>> last_size;
-        const auto bit_size = [&](const std::string& type_name) {
-            return last_size.get(trim(type_name), [&](std::string_view name) { return types.bit_size(name); });
+        const auto bit_size = [&](std::string_view trimmed_name) {
+            return last_size.get(trimmed_name, [&](std::string_view name) { return types.bit_size(name); });
         };
         for (const auto& type : scope.dictionary->data_types) {
             // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
@@ -338,19 +338,21 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
                                                                                       " is " + bits_text(*implied));
             }
             for (const auto& item : type.sub_items) {
-                if (item.bit_size == 0 || trim(item.type).empty()) continue;
-                const std::optional<std::uint64_t> bits = bit_size(item.type);
-                if (!bits || *bits == item.bit_size || type_accounts_for_users(item.type)) continue;
+                const std::string_view item_type = trim(item.type);
+                if (item.bit_size == 0 || item_type.empty()) continue;
+                const std::optional<std::uint64_t> bits = bit_size(item_type);
+                if (!bits || *bits == item.bit_size || type_accounts_for_users(item_type)) continue;
                 context.report(item.pos, "SubItem '" + item.name + "' of DataType " + type.name + " has BitSize " + std::to_string(item.bit_size) +
-                                             " but its type " + std::string(trim(item.type)) + " is " + bits_text(*bits));
+                                             " but its type " + std::string(item_type) + " is " + bits_text(*bits));
             }
         }
         for (const auto& object : scope.dictionary->objects) {
-            if (object.bit_size == 0 || object.bit_size_pos.line == 0 || trim(object.type).empty()) continue;
-            const std::optional<std::uint64_t> bits = bit_size(object.type);
-            if (!bits || *bits == object.bit_size || type_accounts_for_users(object.type)) continue;
+            const std::string_view object_type = trim(object.type);
+            if (object.bit_size == 0 || object.bit_size_pos.line == 0 || object_type.empty()) continue;
+            const std::optional<std::uint64_t> bits = bit_size(object_type);
+            if (!bits || *bits == object.bit_size || type_accounts_for_users(object_type)) continue;
             context.report(object.bit_size_pos, "Object " + object_address(object.index) + " has BitSize " + std::to_string(object.bit_size) +
-                                                    " but its type " + std::string(trim(object.type)) + " is " + bits_text(*bits));
+                                                    " but its type " + std::string(object_type) + " is " + bits_text(*bits));
         }
     }
 }
