@@ -138,6 +138,25 @@ std::optional<std::uint64_t> TypeIndex::bit_size(std::string_view name) const {
     return implied_bit_size(name);
 }
 
+TypeIndex::NameFacts TypeIndex::facts(std::string_view name) const {
+    name = trim(name);
+    NameFacts out;
+    // A DataType or a basic type of that name: resolved, with that type's size (what status()
+    // and bit_size() find first).
+    const auto size = [](std::uint64_t bits) { return bits > 0 ? std::optional<std::uint64_t>(bits) : std::nullopt; };
+    if (const DataType* t = find(name)) {
+        out.bit_size = size(t->bit_size);
+        return out;
+    }
+    if (const BasicType* basic = find_basic_type(name)) {
+        out.bit_size = size(basic->bit_size);
+        return out;
+    }
+    out.status = status(name, &out.culprit);  // STRING(n), arrays and names that do not resolve
+    out.bit_size = bit_size(name);
+    return out;
+}
+
 bool TypeIndex::in_base_type_cycle(const DataType& type) const { return in_cycle_.count(&type) != 0; }
 
 bool TypeIndex::is_first_of_name(const DataType& type) const {

@@ -35,6 +35,14 @@ public:
     [[nodiscard]] TypeNameStatus status(std::string_view name, std::string_view* culprit = nullptr) const;
     // Bits of a type: a DataType's BitSize, else what the name implies; nullopt when unknown.
     [[nodiscard]] std::optional<std::uint64_t> bit_size(std::string_view name) const;
+    // status() and bit_size() of one name together, for walks over every type reference: the
+    // two share their look-ups.
+    struct NameFacts {
+        TypeNameStatus status = TypeNameStatus::resolved;
+        std::string_view culprit;  // as status() gives it
+        std::optional<std::uint64_t> bit_size;
+    };
+    [[nodiscard]] NameFacts facts(std::string_view name) const;
     // The basic type a name ends in, following BaseType (an enum DT0800EN03 based on USINT is
     // USINT); nullptr for arrays, structures and unresolved names.
     [[nodiscard]] const BasicType* basic(std::string_view name) const;

@@ -5,27 +5,30 @@
 namespace esi::rules {
 
 namespace {
-// A status with the part of the name at fault as a place in the name, so that it applies to
-// every reference spelled alike.
-struct NameStatus {
+// What a name means, with the part of the name at fault as a place in the name, so that it
+// applies to every reference spelled alike.
+struct NameMeaning {
     TypeNameStatus status = TypeNameStatus::resolved;
     std::size_t culprit_at = 0;
     std::size_t culprit_size = 0;
+    std::optional<std::uint64_t> bit_size;
 };
 }  // namespace
 
-std::vector<TypeReferenceFault> type_reference_faults(const Dictionary& dictionary, const TypeIndex& types) {
-    std::vector<TypeReferenceFault> out;
-    LastNameAnswer<NameStatus> last_status;
+std::vector<ReferencedType> referenced_types(const Dictionary& dictionary, const TypeIndex& types) {
+    std::vector<ReferencedType> out;
+    std::size_t count = dictionary.objects.size();
+    for (const auto& type : dictionary.data_types) count += 1 + type.sub_items.size();
+    out.reserve(count);  // at most one reference per Object, DataType and SubItem
+    LastNameAnswer<NameMeaning> last_meaning;
     for_each_type_reference(dictionary, [&](const TypeReference& ref) {
-        const NameStatus& status = last_status.get(ref.name, [&](std::string_view name) {
-            std::string_view culprit;
-            const TypeNameStatus s = types.status(name, &culprit);
-            if (s == TypeNameStatus::resolved) return NameStatus{};
-            return NameStatus{s, static_cast<std::size_t>(culprit.data() - name.data()), culprit.size()};
+        const NameMeaning& meaning = last_meaning.get(ref.name, [&](std::string_view name) {
+            const TypeIndex::NameFacts facts = types.facts(name);
+            if (facts.status == TypeNameStatus::resolved) return NameMeaning{.bit_size = facts.bit_size};
+            return NameMeaning{facts.status, static_cast<std::size_t>(facts.culprit.data() - name.data()), facts.culprit.size(),
+                               facts.bit_size};
         });
-        if (status.status != TypeNameStatus::resolved)
-            out.push_back(TypeReferenceFault{ref, status.status, ref.name.substr(status.culprit_at, status.culprit_size)});
+        out.push_back(ReferencedType{ref, meaning.status, ref.name.substr(meaning.culprit_at, meaning.culprit_size), meaning.bit_size});
     });
     return out;
 }

@@ -1,9 +1,11 @@
 #pragma once
-// The places where a Dictionary names a type (an Object's Type, a SubItem's Type, a BaseType)
-// and those whose name does not resolve. od-type-unresolved and od-nonstandard-type-name judge
-// the same references: the names are looked up once (RuleCache::type_reference_faults) and each
-// rule reports its kind of fault.
+// The places where a Dictionary names a type (an Object's Type, a SubItem's Type, a BaseType),
+// with what each name means. od-type-unresolved, od-nonstandard-type-name and od-bitsize judge
+// the same references: the names are looked up once (RuleCache::referenced_types) and each rule
+// takes what it needs.
 
+#include <cstdint>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -36,14 +38,16 @@ void for_each_type_reference(const Dictionary& dictionary, F&& f) {
             f(TypeReference{name, object.type_pos.line ? object.type_pos : object.pos, &object, nullptr, nullptr});
 }
 
-// A reference whose name is not resolved (TypeIndex::status), with the part of the name at fault.
-struct TypeReferenceFault {
+// A reference with what its name means: whether it resolves (TypeIndex::status, with the part of
+// the name at fault) and its size in bits (TypeIndex::bit_size).
+struct ReferencedType {
     TypeReference reference;
-    TypeNameStatus status = TypeNameStatus::unresolved;  // unresolved or nonstandard
+    TypeNameStatus status = TypeNameStatus::resolved;
     std::string_view culprit;
+    std::optional<std::uint64_t> bit_size;
 };
 
-// The faulty references of a Dictionary, in the order of for_each_type_reference.
-[[nodiscard]] std::vector<TypeReferenceFault> type_reference_faults(const Dictionary& dictionary, const TypeIndex& types);
+// Every reference of a Dictionary, in the order of for_each_type_reference.
+[[nodiscard]] std::vector<ReferencedType> referenced_types(const Dictionary& dictionary, const TypeIndex& types);
 
 }  // namespace esi::rules

@@ -59,11 +59,10 @@ const DataTypeSizes& RuleCache::type_sizes(const Dictionary& dictionary) {
     return *e.type_sizes;
 }
 
-const std::vector<TypeReferenceFault>& RuleCache::type_reference_faults(const Dictionary& dictionary) {
+const std::vector<ReferencedType>& RuleCache::referenced_types(const Dictionary& dictionary) {
     PerDictionary& e = entry(&dictionary);
-    if (!e.type_reference_faults)
-        e.type_reference_faults = std::make_unique<std::vector<TypeReferenceFault>>(rules::type_reference_faults(dictionary, *e.types));
-    return *e.type_reference_faults;
+    if (!e.referenced_types) e.referenced_types = std::make_unique<std::vector<ReferencedType>>(rules::referenced_types(dictionary, *e.types));
+    return *e.referenced_types;
 }
 
 }  // namespace esi::rules

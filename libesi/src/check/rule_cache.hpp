@@ -1,7 +1,7 @@
 #pragma once
 // What several rules compute about the same Dictionary, computed once per lint run: its
-// DataTypes by name (with BaseType loops), its objects by index and their layouts, the type
-// references whose names do not resolve; and for each device and module what its PDO entries'
+// DataTypes by name (with BaseType loops), its objects by index and their layouts, its type
+// references with what their names mean; and for each device and module what its PDO entries'
 // DataTypes mean and which objects they map. Rules take these from the cache
 // (RuleContext::cache) and never build their own, so each index and each object layout is built
 // at most once per Dictionary and run, however many rules ask.
@@ -41,8 +41,8 @@ public:
     [[nodiscard]] PdoEntryFacts& pdo_entries(const PdoScope& scope);
     // The DataTypes' sizes as their users see them (a Dictionary, not null).
     [[nodiscard]] const DataTypeSizes& type_sizes(const Dictionary& dictionary);
-    // The type references whose names do not resolve (a Dictionary, not null).
-    [[nodiscard]] const std::vector<TypeReferenceFault>& type_reference_faults(const Dictionary& dictionary);
+    // Every type reference with what its name means (a Dictionary, not null).
+    [[nodiscard]] const std::vector<ReferencedType>& referenced_types(const Dictionary& dictionary);
 
 private:
     struct PerDictionary {
@@ -50,7 +50,7 @@ private:
         std::unique_ptr<DictionaryIndex> objects;
         std::unique_ptr<EntryTypes> entry_types;
         std::unique_ptr<DataTypeSizes> type_sizes;
-        std::unique_ptr<std::vector<TypeReferenceFault>> type_reference_faults;
+        std::unique_ptr<std::vector<ReferencedType>> referenced_types;
     };
     PerDictionary& entry(const Dictionary* dictionary);
 

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "check/areas.hpp"
-#include "check/last_name_answer.hpp"
 #include "check/od_layout_faults.hpp"
 #include "check/od_scope.hpp"
 #include "check/od_type_sizes.hpp"
@@ -60,8 +59,8 @@ std::string also_used(std::size_t count) {
 void check_type_unresolved(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : context.cache().dictionary_scopes(document)) {
         NameFindings findings;
-        for (const auto& fault : context.cache().type_reference_faults(*scope.dictionary))
-            if (fault.status == TypeNameStatus::unresolved) findings.add(fault.reference, fault.culprit);
+        for (const auto& ref : context.cache().referenced_types(*scope.dictionary))
+            if (ref.status == TypeNameStatus::unresolved) findings.add(ref.reference, ref.culprit);
         for (const auto& f : findings.entries) {
             std::string message = describe(f.first) + " uses type '" + std::string(f.first.name) + "', ";
             message += f.culprit != f.first.name ? "whose element type '" + f.culprit + "'" : std::string("which");
@@ -93,8 +92,8 @@ void check_nonstandard_type_name(const EsiDocument& document, RuleContext& conte
         // A Dictionary may define a DataType of any name, INT8 included (Beckhoff's SoE
         // dictionaries do); only names nothing defines are faults.
         NameFindings findings;
-        for (const auto& fault : context.cache().type_reference_faults(*scope.dictionary))
-            if (fault.status == TypeNameStatus::nonstandard) findings.add(fault.reference, fault.culprit);
+        for (const auto& ref : context.cache().referenced_types(*scope.dictionary))
+            if (ref.status == TypeNameStatus::nonstandard) findings.add(ref.reference, ref.culprit);
         for (const auto& f : findings.entries)
             context.report(f.first.pos, describe(f.first) + " uses type '" + f.culprit + "', which is not an ESI type name; the standard name is '" +
                                             std::string(standard_type_name_for(f.culprit)) + "'" + also_used(f.count));
@@ -325,10 +324,10 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
             const DataType* t = types.find(trim(name));
             return t && sizes.own_size_accounts_for_users(*t);
         };
-        LastNameAnswer<std::optional<std::uint64_t>> last_size;
-        const auto bit_size = [&](std::string_view trimmed_name) {
-            return last_size.get(trimmed_name, [&](std::string_view name) { return types.bit_size(name); });
-        };
+        // The references come DataType by DataType (its BaseType, then its SubItems), then the
+        // Objects: a finding about a DataType's own name precedes those about its SubItems.
+        const std::vector<ReferencedType>& refs = context.cache().referenced_types(*scope.dictionary);
+        std::size_t r = 0;
         for (const auto& type : scope.dictionary->data_types) {
             // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
             if (type.bit_size > 0 && types.is_first_of_name(type)) {
@@ -337,22 +336,25 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
                                                                                       std::to_string(type.bit_size) + " but " + type.name +
                                                                                       " is " + bits_text(*implied));
             }
-            for (const auto& item : type.sub_items) {
-                const std::string_view item_type = trim(item.type);
-                if (item.bit_size == 0 || item_type.empty()) continue;
-                const std::optional<std::uint64_t> bits = bit_size(item_type);
-                if (!bits || *bits == item.bit_size || type_accounts_for_users(item_type)) continue;
-                context.report(item.pos, "SubItem '" + item.name + "' of DataType " + type.name + " has BitSize " + std::to_string(item.bit_size) +
-                                             " but its type " + std::string(item_type) + " is " + bits_text(*bits));
+            for (; r < refs.size() && refs[r].reference.data_type == &type; ++r) {
+                const ReferencedType& ref = refs[r];
+                const DataTypeSubItem* item = ref.reference.sub_item;
+                if (!item || item->bit_size == 0) continue;  // the BaseType, or a SubItem without BitSize
+                const std::optional<std::uint64_t>& bits = ref.bit_size;
+                if (!bits || *bits == item->bit_size || type_accounts_for_users(ref.reference.name)) continue;
+                context.report(item->pos, "SubItem '" + item->name + "' of DataType " + type.name + " has BitSize " +
+                                              std::to_string(item->bit_size) + " but its type " + std::string(ref.reference.name) + " is " +
+                                              bits_text(*bits));
             }
         }
-        for (const auto& object : scope.dictionary->objects) {
-            const std::string_view object_type = trim(object.type);
-            if (object.bit_size == 0 || object.bit_size_pos.line == 0 || object_type.empty()) continue;
-            const std::optional<std::uint64_t> bits = bit_size(object_type);
-            if (!bits || *bits == object.bit_size || type_accounts_for_users(object_type)) continue;
+        for (; r < refs.size(); ++r) {
+            const ReferencedType& ref = refs[r];
+            const Object& object = *ref.reference.object;
+            if (object.bit_size == 0 || object.bit_size_pos.line == 0) continue;
+            const std::optional<std::uint64_t>& bits = ref.bit_size;
+            if (!bits || *bits == object.bit_size || type_accounts_for_users(ref.reference.name)) continue;
             context.report(object.bit_size_pos, "Object " + object_address(object.index) + " has BitSize " + std::to_string(object.bit_size) +
-                                                    " but its type " + std::string(object_type) + " is " + bits_text(*bits));
+                                                    " but its type " + std::string(ref.reference.name) + " is " + bits_text(*bits));
         }
     }
 }
