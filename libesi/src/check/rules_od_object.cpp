@@ -1,5 +1,6 @@
 // Rules of the od area on the objects of a Dictionary: presence of the mandatory objects,
 // duplicates, flag values, and default/minimum/maximum values against the entry they belong to.
+#include <algorithm>
 #include <string>
 
 #include "check/areas.hpp"
@@ -96,6 +97,9 @@ void check_data_length(RuleContext& context, const HexData& data, std::string_vi
                        std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes"));
 }
 
+// Whether an entry has values whose length is judged: data or a DefaultString.
+bool has_lengths(const EntryValues& values) { return values.default_data || values.min_data || values.max_data || values.default_string; }
+
 // Length checks of DefaultData/MinData/MaxData and DefaultString for an entry of `bits` bits.
 void check_lengths(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
                    const BasicType* basic, std::uint64_t bits, SourcePos fallback) {
@@ -176,8 +180,12 @@ void check_range(RuleContext& context, const EntryValues& values, const EntryNam
     context.report(pos, *as_patterns);
 }
 
-template <class F>
-void for_each_valued_entry(const EsiDocument& document, RuleContext& context, F&& f) {
+// Calls f(values, name, type name, basic type, bits, position) for every entry whose values
+// `wanted` accepts: DataType SubItems with values, then the sub-entries of the objects by their
+// layouts. Every sub-entry takes its values from the object's Info or from one of the Info's
+// SubItems, so an object none of whose Infos `wanted` accepts is passed by without its layout.
+template <class Wanted, class F>
+void for_each_valued_entry(const EsiDocument& document, RuleContext& context, Wanted&& wanted, F&& f) {
     for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const Dictionary& dictionary = *scope.dictionary;
         const TypeIndex& types = context.cache().types(&dictionary);
@@ -185,16 +193,24 @@ void for_each_valued_entry(const EsiDocument& document, RuleContext& context, F&
         for (const auto& type : dictionary.data_types)
             for (const auto& item : type.sub_items) {
                 if (!item.default_data && !item.default_value && !item.default_string && !item.max_value && !item.min_value) continue;
-                f(values_of(item), EntryName{nullptr, 0, false, &type, &item}, std::string_view(item.type), types.basic(item.type),
-                  item.bit_size, item.pos);
+                const EntryValues values = values_of(item);
+                if (!wanted(values)) continue;
+                f(values, EntryName{nullptr, 0, false, &type, &item}, std::string_view(item.type), types.basic(item.type), item.bit_size,
+                  item.pos);
             }
         for (const auto& object : dictionary.objects) {
             if (!object.info) continue;  // no values at all, for the object or its sub-entries
+            const ObjectInfo& info = *object.info;
+            if (!wanted(values_of(info)) &&
+                std::none_of(info.sub_items.begin(), info.sub_items.end(), [&](const ObjectSubItemInfo& s) { return wanted(values_of(s.info)); }))
+                continue;
             const ObjectLayout& layout = objects.layout(object);
             for (const auto& entry : layout.entries) {
                 if (!entry.info) continue;
-                f(values_of(*entry.info), EntryName{&object, entry.subindex, layout.code == ObjectCode::var, nullptr, nullptr},
-                  std::string_view(entry.type), entry.basic, entry.bit_size, entry.info->pos);
+                const EntryValues values = values_of(*entry.info);
+                if (!wanted(values)) continue;
+                f(values, EntryName{&object, entry.subindex, layout.code == ObjectCode::var, nullptr, nullptr}, std::string_view(entry.type),
+                  entry.basic, entry.bit_size, entry.info->pos);
             }
         }
     }
@@ -341,8 +357,8 @@ constexpr Rule od_flags_value{
 // ---- od-default-length ----------------------------------------------------------------------
 
 void check_default_length(const EsiDocument& document, RuleContext& context) {
-    for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
-                                                 const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+    for_each_valued_entry(document, context, has_lengths, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
+                                                              const BasicType* basic, std::uint64_t bits, SourcePos pos) {
         check_lengths(context, values, name, type_name, basic, bits, pos);
     });
 }
@@ -366,9 +382,10 @@ constexpr Rule od_default_length{
 // ---- od-default-range -----------------------------------------------------------------------
 
 void check_default_range(const EsiDocument& document, RuleContext& context) {
-    for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
-                                                 const BasicType* basic, std::uint64_t bits, SourcePos pos) {
-        if (may_be_out_of_range(values)) check_range(context, values, name, type_name, basic, bits, pos);
+    for_each_valued_entry(document, context, may_be_out_of_range, [&](const EntryValues& values, const EntryName& name,
+                                                                       std::string_view type_name, const BasicType* basic,
+                                                                       std::uint64_t bits, SourcePos pos) {
+        check_range(context, values, name, type_name, basic, bits, pos);
     });
 }
 
