@@ -10,8 +10,16 @@ bool index_less(const std::pair<std::uint32_t, const Object*>& a, const std::pai
 }
 }  // namespace
 
-DictionaryIndex::DictionaryIndex(const Dictionary* dictionary, const DataTypeIndex& types) : dictionary_(dictionary), types_(types) {
+namespace {
+// The number of DataTypes up to which layouts scan the list (measured on the corpus: a scan of up
+// to 64 names costs no more than building the index and asking it; a few catalogues define
+// hundreds).
+constexpr std::size_t scanned_data_types = 64;
+}  // namespace
+
+DictionaryIndex::DictionaryIndex(const Dictionary* dictionary) : dictionary_(dictionary) {
     if (!dictionary) return;
+    if (dictionary->data_types.size() > scanned_data_types) types_.emplace(dictionary);
     by_index_.reserve(dictionary->objects.size());
     for (const auto& o : dictionary->objects) by_index_.emplace_back(o.index, &o);
     // Dictionaries list their objects by index as a rule; the stable sort is for those that do not.
@@ -31,7 +39,7 @@ const ObjectLayout* DictionaryIndex::layout(std::uint32_t index) const {
 
 const ObjectLayout& DictionaryIndex::layout(const Object& object) const {
     std::optional<ObjectLayout>& slot = layouts_[static_cast<std::size_t>(&object - dictionary_->objects.data())];
-    if (!slot) slot = layout_of(types_, object);
+    if (!slot) slot = types_ ? layout_of(*types_, object) : layout_of(dictionary_, object);
     return *slot;
 }
 

@@ -15,8 +15,7 @@ namespace esi::rules {
 
 class DictionaryIndex {
 public:
-    // `types` indexes the same Dictionary and must outlive this index.
-    DictionaryIndex(const Dictionary* dictionary, const DataTypeIndex& types);
+    explicit DictionaryIndex(const Dictionary* dictionary);
     [[nodiscard]] const Dictionary* dictionary() const { return dictionary_; }
     // The first object with that index.
     [[nodiscard]] const Object* object(std::uint32_t index) const;
@@ -29,7 +28,11 @@ public:
 
 private:
     const Dictionary* dictionary_;
-    const DataTypeIndex& types_;
+    // Layouts look type names up in the DataTypes. Nearly all Dictionaries define a few dozen at
+    // most, and layout_of scans such a list faster (names of another length are passed over at
+    // once) than a DataTypeIndex, with a map node per DataType, is built and asked; only a longer
+    // list gets the index.
+    std::optional<DataTypeIndex> types_;
     // The objects' indices with the objects, sorted by index and, among equal indices, in the
     // order of the Dictionary: a binary search finds the first object of an index.
     std::vector<std::pair<std::uint32_t, const Object*>> by_index_;

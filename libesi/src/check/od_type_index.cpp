@@ -25,7 +25,7 @@ const BasicType* basic_or_string(std::string_view name) {
 
 TypeIndex::TypeIndex(const Dictionary& dictionary) : TypeIndex(&dictionary) {}
 
-TypeIndex::TypeIndex(const Dictionary* dictionary) : data_types_(dictionary), names_(dictionary) {
+TypeIndex::TypeIndex(const Dictionary* dictionary) : dictionary_(dictionary), names_(dictionary) {
     if (!dictionary) return;
     // Whether the index holds each DataType (the first of its exact name), and whether find()
     // answers it (find trims the name it is given, so a name with blanks around it never finds
@@ -160,8 +160,7 @@ TypeIndex::NameFacts TypeIndex::facts(std::string_view name) const {
 bool TypeIndex::in_base_type_cycle(const DataType& type) const { return in_cycle_.count(&type) != 0; }
 
 bool TypeIndex::is_first_of_name(const DataType& type) const {
-    const Dictionary* dictionary = data_types_.dictionary();
-    return dictionary && first_of_name_[static_cast<std::size_t>(&type - dictionary->data_types.data())];
+    return dictionary_ && first_of_name_[static_cast<std::size_t>(&type - dictionary_->data_types.data())];
 }
 
 }  // namespace esi::rules

@@ -12,7 +12,6 @@
 #include "check/data_type_names.hpp"
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
-#include "esi/model/object_layout.hpp"
 
 namespace esi::rules {
 
@@ -51,14 +50,11 @@ public:
     // Whether `type` (of this Dictionary) is the one find(type.name) answers, the first of its
     // name; later ones are duplicates. Known for every DataType once the index is built.
     [[nodiscard]] bool is_first_of_name(const DataType& type) const;
-    // The DataTypes by exact name, for resolve_type and layout_of.
-    [[nodiscard]] const DataTypeIndex& data_types() const { return data_types_; }
-
 private:
     void find_cycles(const Dictionary& dictionary, const std::vector<bool>& indexed);
 
-    DataTypeIndex data_types_;  // for layouts (layout_of)
-    DataTypeNames names_;       // the same answers, for the rules' many lookups
+    const Dictionary* dictionary_;
+    DataTypeNames names_;
     std::unordered_set<const DataType*> in_cycle_;
     std::vector<bool> first_of_name_;  // by position in DataTypes
 };

@@ -38,7 +38,7 @@ const TypeIndex& RuleCache::types(const Dictionary* dictionary) { return *entry(
 
 const DictionaryIndex& RuleCache::objects(const Dictionary* dictionary) {
     PerDictionary& e = entry(dictionary);
-    if (!e.objects) e.objects = std::make_unique<DictionaryIndex>(dictionary, e.types->data_types());
+    if (!e.objects) e.objects = std::make_unique<DictionaryIndex>(dictionary);
     return *e.objects;
 }
 
