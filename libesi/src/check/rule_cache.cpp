@@ -30,7 +30,7 @@ const std::vector<PdoScope>& RuleCache::pdo_scopes(const EsiDocument& document) 
 
 RuleCache::PerDictionary& RuleCache::entry(const Dictionary* dictionary) {
     PerDictionary& e = dictionaries_[dictionary];
-    if (!e.types) e.types = std::make_unique<TypeIndex>(dictionary);
+    if (!e.types) e.types.emplace(dictionary);
     return e;
 }
 
@@ -38,7 +38,7 @@ const TypeIndex& RuleCache::types(const Dictionary* dictionary) { return *entry(
 
 const DictionaryIndex& RuleCache::objects(const Dictionary* dictionary) {
     PerDictionary& e = entry(dictionary);
-    if (!e.objects) e.objects = std::make_unique<DictionaryIndex>(dictionary);
+    if (!e.objects) e.objects.emplace(dictionary);
     return *e.objects;
 }
 
@@ -47,7 +47,7 @@ PdoEntryFacts& RuleCache::pdo_entries(const PdoScope& scope) {
     if (!facts) {
         const DictionaryIndex& index = objects(scope.dictionary);
         PerDictionary& e = entry(scope.dictionary);
-        if (!e.entry_types) e.entry_types = std::make_unique<EntryTypes>(*e.types);
+        if (!e.entry_types) e.entry_types.emplace(*e.types);
         facts = std::make_unique<PdoEntryFacts>(scope, *e.entry_types, index);
     }
     return *facts;
@@ -55,13 +55,13 @@ PdoEntryFacts& RuleCache::pdo_entries(const PdoScope& scope) {
 
 const DataTypeSizes& RuleCache::type_sizes(const Dictionary& dictionary) {
     PerDictionary& e = entry(&dictionary);
-    if (!e.type_sizes) e.type_sizes = std::make_unique<DataTypeSizes>(dictionary, *e.types);
+    if (!e.type_sizes) e.type_sizes.emplace(dictionary, *e.types);
     return *e.type_sizes;
 }
 
 const std::vector<ReferencedType>& RuleCache::referenced_types(const Dictionary& dictionary) {
     PerDictionary& e = entry(&dictionary);
-    if (!e.referenced_types) e.referenced_types = std::make_unique<std::vector<ReferencedType>>(rules::referenced_types(dictionary, *e.types));
+    if (!e.referenced_types) e.referenced_types = rules::referenced_types(dictionary, *e.types);
     return *e.referenced_types;
 }
 

@@ -45,12 +45,14 @@ public:
     [[nodiscard]] const std::vector<ReferencedType>& referenced_types(const Dictionary& dictionary);
 
 private:
+    // Each part built when first asked for, in place: map nodes do not move, so the references
+    // handed out stay valid.
     struct PerDictionary {
-        std::unique_ptr<TypeIndex> types;
-        std::unique_ptr<DictionaryIndex> objects;
-        std::unique_ptr<EntryTypes> entry_types;
-        std::unique_ptr<DataTypeSizes> type_sizes;
-        std::unique_ptr<std::vector<ReferencedType>> referenced_types;
+        std::optional<TypeIndex> types;
+        std::optional<DictionaryIndex> objects;
+        std::optional<EntryTypes> entry_types;
+        std::optional<DataTypeSizes> type_sizes;
+        std::optional<std::vector<ReferencedType>> referenced_types;
     };
     PerDictionary& entry(const Dictionary* dictionary);
 
