@@ -8,9 +8,7 @@ namespace {
 bool index_less(const std::pair<std::uint32_t, const Object*>& a, const std::pair<std::uint32_t, const Object*>& b) {
     return a.first < b.first;
 }
-}  // namespace
 
-namespace {
 // The number of DataTypes up to which layouts scan the list (measured on the corpus: a scan of up
 // to 64 names costs no more than building the index and asking it; a few catalogues define
 // hundreds).

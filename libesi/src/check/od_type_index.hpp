@@ -50,6 +50,7 @@ public:
     // Whether `type` (of this Dictionary) is the one find(type.name) answers, the first of its
     // name; later ones are duplicates. Known for every DataType once the index is built.
     [[nodiscard]] bool is_first_of_name(const DataType& type) const;
+
 private:
     void find_cycles(const Dictionary& dictionary, const std::vector<bool>& indexed);
 

@@ -1,7 +1,7 @@
 #pragma once
 // The PDO entries of one owner (a device or a module) in the order of PdoScope::for_each_pdo,
 // with what the pdo rules ask of each: what its DataType means and which object sub-entry it
-// maps. Nine rules walk every entry of a catalogue; each answer is worked out once per entry and
+// maps. Eight rules walk every entry of a catalogue; each answer is worked out once per entry and
 // lint run (RuleCache::pdo_entries), where a lookup by entry would cost a hash per rule and entry.
 
 #include <cstddef>

@@ -12,8 +12,8 @@
 
 #include <memory>
 #include <optional>
-#include <vector>
 #include <unordered_map>
+#include <vector>
 
 #include "check/od_scope.hpp"
 #include "check/od_type_index.hpp"

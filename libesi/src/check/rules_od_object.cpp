@@ -79,10 +79,10 @@ struct EntryName {
     }
 };
 
-// The length check of one DefaultData/MinData/MaxData whose byte count differs from the entry's
-// size (`bytes`): strings and byte arrays may be given shorter than their maximum length, and data
-// that is not hex gives no value at all.
-void check_data_length(RuleContext& context, const HexData& data, std::string_view element, const EntryName& name,
+// The length check of one DefaultData/MinData/MaxData whose byte count differs from the size of
+// the entry (`bits`): strings and byte arrays may be given shorter than their maximum length, and
+// data that is not hex gives no value at all.
+void judge_data_length(RuleContext& context, const HexData& data, std::string_view element, const EntryName& name,
                        std::string_view type_name, const BasicType* basic, std::uint64_t bits, SourcePos fallback) {
     const std::uint64_t bytes = (bits + 7) / 8;
     const std::uint64_t length = data.byte_length();
@@ -107,9 +107,9 @@ void check_lengths(RuleContext& context, const EntryValues& values, const EntryN
     const std::uint64_t bytes = (bits + 7) / 8;
     const auto check = [&](const std::optional<HexData>& data, std::string_view element) {
         // Empty data (<DefaultData/>) gives no value at all. Nearly every value has the entry's
-        // length, which is all this tests; the rest is check_data_length's.
+        // length, which is all this tests; the rest is judge_data_length's.
         if (!data || data->text.empty() || data->byte_length() == bytes) return;
-        check_data_length(context, *data, element, name, type_name, basic, bits, fallback);
+        judge_data_length(context, *data, element, name, type_name, basic, bits, fallback);
     };
     check(values.default_data, "DefaultData");
     check(values.min_data, "MinData");
