@@ -18,12 +18,14 @@ constexpr std::uint64_t register_map_blocks = 16;
 
 struct BlockLimit {
     std::uint64_t count;
-    std::string because;  // for the message: where the count comes from
+    bool stated = false;  // Info/EtherCATController/<element> gives the count, not the register map
 };
 
 // How many register blocks of a kind the ESC has: Info/EtherCATController/<element> (SmCount,
-// FmmuCount) where given and readable, else the register map's 16. `what` names the blocks.
-[[nodiscard]] BlockLimit block_limit(const Device& device, std::string_view element, std::string_view what);
+// FmmuCount) where given and readable, else the register map's 16.
+[[nodiscard]] BlockLimit block_limit(const Device& device, std::string_view element);
+// For a message: where the count comes from. `what` names the blocks.
+[[nodiscard]] std::string block_limit_reason(const BlockLimit& limit, std::string_view element, std::string_view what);
 
 // Reports the first of `blocks` (a device's Sm or Fmmu elements) past what the ESC has (sm-count,
 // fmmu-count): `element` is the EtherCATController count, `what` names the blocks in the message
@@ -31,11 +33,11 @@ struct BlockLimit {
 template <typename Block>
 void report_blocks_past_limit(const Device& device, const std::vector<Block>& blocks, std::string_view element, std::string_view what,
                               std::string_view prefix, RuleContext& context) {
-    const BlockLimit limit = block_limit(device, element, what);
+    const BlockLimit limit = block_limit(device, element);
     if (blocks.size() <= limit.count) return;
     context.report(blocks[limit.count].pos, "the device describes " + std::to_string(blocks.size()) + " " + std::string(what) + ", " +
                                                 std::string(prefix) + std::to_string(limit.count) +
-                                                " and above are more than the ESC has (" + limit.because +
+                                                " and above are more than the ESC has (" + block_limit_reason(limit, element, what) +
                                                 "); the master cannot configure them");
 }
 

@@ -25,17 +25,29 @@ const BasicType* basic_or_string(std::string_view name) {
 
 TypeIndex::TypeIndex(const Dictionary& dictionary) : TypeIndex(&dictionary) {}
 
-TypeIndex::TypeIndex(const Dictionary* dictionary) : data_types_(dictionary) { find_cycles(); }
+TypeIndex::TypeIndex(const Dictionary* dictionary) : dictionary_(dictionary), names_(dictionary) {
+    if (!dictionary) return;
+    // Whether the index holds each DataType (the first of its exact name), and whether find()
+    // answers it (find trims the name it is given, so a name with blanks around it never finds
+    // its own DataType).
+    const auto& types = dictionary->data_types;
+    std::vector<bool> indexed(types.size());
+    first_of_name_.resize(types.size());
+    for (std::size_t i = 0; i < types.size(); ++i) {
+        indexed[i] = names_.is_first_of_name(types[i]);
+        first_of_name_[i] = indexed[i] && trim(types[i].name).size() == types[i].name.size();
+    }
+    find_cycles(*dictionary, indexed);
+}
 
-void TypeIndex::find_cycles() {
+void TypeIndex::find_cycles(const Dictionary& dictionary, const std::vector<bool>& indexed) {
     // Every DataType has at most one BaseType, so the types form chains that either end or run
     // into one loop. One walk per chain, marking what it passed, finds every loop in linear time.
     enum class State { unvisited, on_path, done };
-    const Dictionary* dictionary = data_types_.dictionary();
-    if (!dictionary) return;
     // States by position in DataTypes (every DataType pointer here points into it).
-    std::vector<State> states(dictionary->data_types.size(), State::unvisited);
-    const auto state = [&](const DataType* t) -> State& { return states[static_cast<std::size_t>(t - dictionary->data_types.data())]; };
+    std::vector<State> states(dictionary.data_types.size(), State::unvisited);
+    const auto position = [&](const DataType* t) { return static_cast<std::size_t>(t - dictionary.data_types.data()); };
+    const auto state = [&](const DataType* t) -> State& { return states[position(t)]; };
     const auto next = [&](const DataType* t) -> const DataType* {
         if (!t->base_type) return nullptr;
         const std::string_view base = trim(*t->base_type);
@@ -45,9 +57,11 @@ void TypeIndex::find_cycles() {
         return n;
     };
     std::vector<const DataType*> path;
-    for (const auto& type : dictionary->data_types) {
+    for (const auto& type : dictionary.data_types) {
         const DataType* start = &type;
-        if (data_types_.find(type.name) != start || state(start) != State::unvisited) continue;  // only the first of a name is indexed
+        // Only the first of a name is indexed; a chain starts at a type with a BaseType (one
+        // without is a chain of its own that ends at once, and chains running into it stop there).
+        if (!type.base_type || !indexed[position(start)] || state(start) != State::unvisited) continue;
         path.clear();
         const DataType* t = start;
         while (t && state(t) == State::unvisited) {
@@ -80,7 +94,7 @@ const BasicType* TypeIndex::basic(std::string_view name) const {
     return nullptr;  // a BaseType loop, or a chain too long to be real
 }
 
-const DataType* TypeIndex::find(std::string_view name) const { return data_types_.find(trim(name)); }
+const DataType* TypeIndex::find(std::string_view name) const { return names_.find(trim(name)); }
 
 TypeNameStatus TypeIndex::status(std::string_view name, std::string_view* culprit) const {
     name = trim(name);
@@ -124,6 +138,29 @@ std::optional<std::uint64_t> TypeIndex::bit_size(std::string_view name) const {
     return implied_bit_size(name);
 }
 
+TypeIndex::NameFacts TypeIndex::facts(std::string_view name) const {
+    name = trim(name);
+    NameFacts out;
+    // A DataType or a basic type of that name: resolved, with that type's size (what status()
+    // and bit_size() find first).
+    const auto size = [](std::uint64_t bits) { return bits > 0 ? std::optional<std::uint64_t>(bits) : std::nullopt; };
+    if (const DataType* t = find(name)) {
+        out.bit_size = size(t->bit_size);
+        return out;
+    }
+    if (const BasicType* basic = find_basic_type(name)) {
+        out.bit_size = size(basic->bit_size);
+        return out;
+    }
+    out.status = status(name, &out.culprit);  // STRING(n), arrays and names that do not resolve
+    out.bit_size = bit_size(name);
+    return out;
+}
+
 bool TypeIndex::in_base_type_cycle(const DataType& type) const { return in_cycle_.count(&type) != 0; }
+
+bool TypeIndex::is_first_of_name(const DataType& type) const {
+    return dictionary_ && first_of_name_[static_cast<std::size_t>(&type - dictionary_->data_types.data())];
+}
 
 }  // namespace esi::rules

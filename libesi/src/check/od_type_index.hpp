@@ -7,10 +7,11 @@
 #include <optional>
 #include <string_view>
 #include <unordered_set>
+#include <vector>
 
+#include "check/data_type_names.hpp"
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
-#include "esi/model/object_layout.hpp"
 
 namespace esi::rules {
 
@@ -33,19 +34,30 @@ public:
     [[nodiscard]] TypeNameStatus status(std::string_view name, std::string_view* culprit = nullptr) const;
     // Bits of a type: a DataType's BitSize, else what the name implies; nullopt when unknown.
     [[nodiscard]] std::optional<std::uint64_t> bit_size(std::string_view name) const;
+    // status() and bit_size() of one name together, for walks over every type reference: the
+    // two share their look-ups.
+    struct NameFacts {
+        TypeNameStatus status = TypeNameStatus::resolved;
+        std::string_view culprit;  // as status() gives it
+        std::optional<std::uint64_t> bit_size;
+    };
+    [[nodiscard]] NameFacts facts(std::string_view name) const;
     // The basic type a name ends in, following BaseType (an enum DT0800EN03 based on USINT is
     // USINT); nullptr for arrays, structures and unresolved names.
     [[nodiscard]] const BasicType* basic(std::string_view name) const;
     // Whether following BaseType from this DataType comes back to it.
     [[nodiscard]] bool in_base_type_cycle(const DataType& type) const;
-    // The DataTypes by exact name, for resolve_type and layout_of.
-    [[nodiscard]] const DataTypeIndex& data_types() const { return data_types_; }
+    // Whether `type` (of this Dictionary) is the one find(type.name) answers, the first of its
+    // name; later ones are duplicates. Known for every DataType once the index is built.
+    [[nodiscard]] bool is_first_of_name(const DataType& type) const;
 
 private:
-    void find_cycles();
+    void find_cycles(const Dictionary& dictionary, const std::vector<bool>& indexed);
 
-    DataTypeIndex data_types_;
+    const Dictionary* dictionary_;
+    DataTypeNames names_;
     std::unordered_set<const DataType*> in_cycle_;
+    std::vector<bool> first_of_name_;  // by position in DataTypes
 };
 
 }  // namespace esi::rules

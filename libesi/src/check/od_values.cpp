@@ -1,5 +1,7 @@
 #include "check/od_values.hpp"
 
+#include <array>
+
 namespace esi::rules {
 
 namespace {
@@ -16,18 +18,26 @@ Number from_pattern(std::uint64_t pattern, const ValueFormat& format) {
     return Number::from_unsigned(pattern);
 }
 
+// The value of each character as a hex digit, -1 for characters that are not one: a table look-up
+// per digit, since the rules read every default, minimum and maximum of the dictionaries.
+constexpr std::array<std::int8_t, 256> hex_digit_values = [] {
+    std::array<std::int8_t, 256> values{};
+    for (int c = 0; c < 256; ++c) {
+        if (c >= '0' && c <= '9') values[c] = static_cast<std::int8_t>(c - '0');
+        else if (c >= 'a' && c <= 'f') values[c] = static_cast<std::int8_t>(c - 'a' + 10);
+        else if (c >= 'A' && c <= 'F') values[c] = static_cast<std::int8_t>(c - 'A' + 10);
+        else values[c] = -1;
+    }
+    return values;
+}();
+
 }  // namespace
 
 std::optional<std::uint64_t> little_endian_pattern(const HexData& data) {
     const std::string& text = data.text;
     const std::size_t byte_count = text.size() / 2;
     if (text.empty() || text.size() % 2 != 0 || byte_count > 8) return std::nullopt;
-    const auto digit = [](char c) -> int {
-        if (c >= '0' && c <= '9') return c - '0';
-        if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-        if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-        return -1;
-    };
+    const auto digit = [](char c) -> int { return hex_digit_values[static_cast<unsigned char>(c)]; };
     std::uint64_t pattern = 0;
     for (std::size_t i = 0; i < byte_count; ++i) {
         const int high = digit(text[2 * i]);

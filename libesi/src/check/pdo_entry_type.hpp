@@ -38,6 +38,10 @@ private:
     const TypeIndex& types_;
     EntryType absent_;  // no DataType element
     std::unordered_map<std::string_view, EntryType> by_text_;
+    // The text asked last and its answer: neighbouring entries mostly share a DataType (a PDO of
+    // eight BOOL inputs), and a comparison with the last text spares the hash of it.
+    std::string_view last_text_;
+    const EntryType* last_ = nullptr;
 };
 
 }  // namespace esi::rules

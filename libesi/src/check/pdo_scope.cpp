@@ -4,6 +4,9 @@ namespace esi::rules {
 
 std::vector<PdoScope> pdo_scopes(const EsiDocument& document) {
     std::vector<PdoScope> out;
+    std::size_t count = 0;
+    for (const auto& info : document.infos) count += info.devices.size() + info.modules.size();
+    out.reserve(count);  // every pdo rule starts with this list: one allocation for it
     for (const auto& info : document.infos) {
         for (const auto& device : info.devices) {
             PdoScope scope;

@@ -6,6 +6,9 @@ namespace esi::rules {
 
 std::vector<const Device*> all_devices(const EsiDocument& document) {
     std::vector<const Device*> out;
+    std::size_t count = 0;
+    for (const auto& info : document.infos) count += info.devices.size();
+    out.reserve(count);  // most rules start with this list: one allocation for it
     for (const auto& info : document.infos)
         for (const auto& device : info.devices) out.push_back(&device);
     return out;
@@ -40,33 +43,6 @@ std::string_view to_string(SmRole role) {
         case SmRole::unknown: return "unknown";
     }
     return "unknown";
-}
-
-DictionaryIndex::DictionaryIndex(const Dictionary* dictionary, const DataTypeIndex& types) : dictionary_(dictionary), types_(types) {
-    if (!dictionary) return;
-    objects_.reserve(dictionary->objects.size());
-    for (const auto& o : dictionary->objects) objects_.emplace(o.index, &o);
-}
-
-const Object* DictionaryIndex::object(std::uint32_t index) const {
-    const auto it = objects_.find(index);
-    return it == objects_.end() ? nullptr : it->second;
-}
-
-const ObjectLayout* DictionaryIndex::layout(std::uint32_t index) const {
-    const Object* o = object(index);
-    return o ? &layout(*o) : nullptr;
-}
-
-const ObjectLayout& DictionaryIndex::layout(const Object& object) const {
-    auto it = layouts_.find(&object);
-    if (it == layouts_.end()) it = layouts_.emplace(&object, layout_of(types_, object)).first;
-    return it->second;  // unordered_map nodes do not move: the reference stays valid
-}
-
-const ObjectEntry* DictionaryIndex::entry(std::uint32_t index, std::uint32_t subindex) const {
-    const ObjectLayout* l = layout(index);
-    return l ? l->entry(subindex) : nullptr;
 }
 
 std::optional<std::uint64_t> default_integer(const ObjectEntry& entry) {

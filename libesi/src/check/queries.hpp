@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <optional>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
+#include "check/dictionary_index.hpp"
 #include "esi/model/ethercat_info.hpp"
 #include "esi/model/object_layout.hpp"
 
@@ -24,28 +24,6 @@ enum class SmRole { mailbox_out, mailbox_in, outputs, inputs, unknown };
 // ControlByte bits: 0b10 in bits 1:0 is mailbox, 0b00 buffered; bits 3:2 = 01 write (master -> slave).
 [[nodiscard]] bool control_byte_is_mailbox(std::uint32_t control_byte);
 [[nodiscard]] bool control_byte_is_write(std::uint32_t control_byte);
-
-// Objects of a dictionary by index, and their layouts, each computed once (dictionaries reach
-// thousands of objects, and several rules ask for the same layouts; see RuleCache).
-class DictionaryIndex {
-public:
-    // `types` indexes the same Dictionary and must outlive this index.
-    DictionaryIndex(const Dictionary* dictionary, const DataTypeIndex& types);
-    [[nodiscard]] const Dictionary* dictionary() const { return dictionary_; }
-    // The first object with that index.
-    [[nodiscard]] const Object* object(std::uint32_t index) const;
-    // The sub-entry a PDO entry or InitCmd addresses; nullptr when the object or sub-index is missing.
-    [[nodiscard]] const ObjectEntry* entry(std::uint32_t index, std::uint32_t subindex) const;
-    [[nodiscard]] const ObjectLayout* layout(std::uint32_t index) const;
-    // The layout of any object of this Dictionary (duplicates of an index included).
-    [[nodiscard]] const ObjectLayout& layout(const Object& object) const;
-
-private:
-    const Dictionary* dictionary_;
-    const DataTypeIndex& types_;
-    std::unordered_map<std::uint32_t, const Object*> objects_;
-    mutable std::unordered_map<const Object*, ObjectLayout> layouts_;
-};
 
 // The default of an object sub-entry as an integer bit pattern: DefaultValue, else DefaultData
 // read little-endian (ETG.2000 ObjectInfoType: DefaultData holds the bytes in SDO order, so

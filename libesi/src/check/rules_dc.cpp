@@ -9,6 +9,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/queries.hpp"
 #include "check/source_edit.hpp"
 #include "esi/number.hpp"
@@ -98,7 +99,7 @@ NameClash name_clash(const Dc& dc, const DcOpMode& mode, const DcOpMode*& other)
 }
 
 void check_name(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->dc) continue;
         for (const auto& mode : device->dc->op_modes) {
             if (mode.name.empty()) {
@@ -133,7 +134,7 @@ constexpr Rule dc_opmode_name{
 };
 
 void check_duplicate(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->dc) continue;
         for (const auto& mode : device->dc->op_modes) {
             const DcOpMode* other = nullptr;
@@ -163,7 +164,7 @@ constexpr Rule dc_opmode_duplicate{
 // ---- dc-assign-activate ---------------------------------------------------------------------
 
 void check_assign_activate(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->dc) continue;
         for (const auto& mode : device->dc->op_modes) {
             if (!mode.has_assign_activate) {
@@ -216,7 +217,7 @@ constexpr Rule dc_assign_activate{
 constexpr std::uint32_t cyclic_unit_control_reserved = 0x00CE;
 
 void check_assign_activate_reserved(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->dc) continue;
         for (const auto& mode : device->dc->op_modes) {
             if (!mode.has_assign_activate || mode.assign_activate > 0xFFFF) continue;  // dc-assign-activate's
@@ -248,7 +249,7 @@ constexpr Rule dc_assign_activate_reserved{
 // ---- dc-sync1-without-sync0 -----------------------------------------------------------------
 
 void check_sync1_without_sync0(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->dc) continue;
         for (const auto& mode : device->dc->op_modes) {
             if (!mode.has_assign_activate || mode.assign_activate > 0xFFFF) continue;
@@ -285,7 +286,7 @@ std::optional<std::uint64_t> number_of(std::string_view text) {
 }
 
 void check_opmode_sm_reference(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->dc) continue;
         for (const auto& mode : device->dc->op_modes) {
             for (const XmlElement& sm : mode.extras.elements) {
@@ -333,7 +334,7 @@ constexpr Rule dc_opmode_sm_reference{
 // ---- dc-cycle-time --------------------------------------------------------------------------
 
 void check_cycle_time(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->dc) continue;
         for (const auto& mode : device->dc->op_modes) {
             for (const auto* t : {&mode.cycle_time_sync0, &mode.cycle_time_sync1}) {

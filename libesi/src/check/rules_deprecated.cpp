@@ -7,6 +7,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/queries.hpp"
 #include "check/source_edit.hpp"
 
@@ -82,7 +83,7 @@ constexpr Rule deprecated_vendor_unique_name{
 // ---- deprecated-tc-cfg-mode-safe-op ---------------------------------------------------------
 
 void check_tc_cfg_mode_safe_op(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document))
+    for (const Device* device : context.cache().devices(document))
         if (device->type.tc_cfg_mode_safe_op)
             context.report(device->type.pos,
                            device_label(*device) +
@@ -107,7 +108,7 @@ constexpr Rule deprecated_tc_cfg_mode_safe_op{
 // ---- deprecated-profile-channel -------------------------------------------------------------
 
 void check_profile_channel(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document))
+    for (const Device* device : context.cache().devices(document))
         for (const auto& profile : device->profiles)
             if (profile.channel)
                 context.report(profile.pos, device_label(*device) + ": Profile@Channel (" + std::to_string(*profile.channel) +
@@ -129,7 +130,7 @@ constexpr Rule deprecated_profile_channel{
 // ---- deprecated-fmmu-op-only ----------------------------------------------------------------
 
 void check_fmmu_op_only(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document))
+    for (const Device* device : context.cache().devices(document))
         for (std::size_t n = 0; n < device->fmmus.size(); ++n)
             if (device->fmmus[n].op_only)
                 context.report(device->fmmus[n].pos, "FMMU" + std::to_string(n) + " '" + device->fmmus[n].type +
@@ -153,7 +154,7 @@ constexpr Rule deprecated_fmmu_op_only{
 // ---- deprecated-sm-one-byte-mode ------------------------------------------------------------
 
 void check_sm_one_byte_mode(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document))
+    for (const Device* device : context.cache().devices(document))
         for (std::size_t n = 0; n < device->sms.size(); ++n)
             if (device->sms[n].one_byte_mode)
                 context.report(device->sms[n].pos, "SM" + std::to_string(n) + ": Sm@OneByteMode is obsolete; remove it",

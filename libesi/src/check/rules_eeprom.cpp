@@ -5,6 +5,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/queries.hpp"
 #include "esi/number.hpp"
 
@@ -22,7 +23,7 @@ std::string device_label(const Device& device) {
 // ---- eeprom-data-and-structured -------------------------------------------------------------
 
 void check_data_and_structured(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom || !device->eeprom->data) continue;
         const Eeprom& e = *device->eeprom;
         std::string also;
@@ -59,7 +60,7 @@ constexpr Rule eeprom_data_and_structured{
 // ---- eeprom-byte-size -----------------------------------------------------------------------
 
 void check_byte_size(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom || !device->eeprom->byte_size) continue;
         const std::uint32_t size = *device->eeprom->byte_size;
         if (size != 0 && size % 128 == 0 && size / 128 <= 0x10000) continue;
@@ -89,7 +90,7 @@ constexpr Rule eeprom_byte_size{
 // ---- eeprom-byte-size-unusual ---------------------------------------------------------------
 
 void check_byte_size_unusual(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom || !device->eeprom->byte_size) continue;
         const std::uint32_t size = *device->eeprom->byte_size;
         if (size == 0 || size % 128 != 0 || (size & (size - 1)) == 0) continue;  // eeprom-byte-size or fine
@@ -132,7 +133,7 @@ void report_bad_hex(const HexData& data, std::string_view what, const Device& de
 }
 
 void check_hex(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom) continue;
         const Eeprom& e = *device->eeprom;
         if (e.data) report_bad_hex(*e.data, "Data", *device, e.pos, context);
@@ -159,7 +160,7 @@ constexpr Rule eeprom_hex{
 // ---- eeprom-config-data ---------------------------------------------------------------------
 
 void check_config_data(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom || !device->eeprom->config_data || !device->eeprom->config_data->valid()) continue;
         const HexData& data = *device->eeprom->config_data;
         const std::size_t bytes = data.byte_length();
@@ -187,7 +188,7 @@ constexpr Rule eeprom_config_data{
 // ---- eeprom-pdi-off --------------------------------------------------------------------------
 
 void check_pdi_off(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom || !device->eeprom->config_data) continue;
         const auto bytes = device->eeprom->config_data->bytes();
         if (!bytes || bytes->empty() || (*bytes)[0] != 0) continue;
@@ -226,7 +227,7 @@ constexpr Rule eeprom_pdi_off{
 // ---- eeprom-boot-strap ----------------------------------------------------------------------
 
 void check_boot_strap(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom || !device->eeprom->boot_strap || !device->eeprom->boot_strap->valid()) continue;
         const HexData& data = *device->eeprom->boot_strap;
         if (data.byte_length() == boot_strap_bytes) continue;
@@ -253,7 +254,7 @@ constexpr Rule eeprom_boot_strap{
 // ---- eeprom-boot-mailbox-overlap ------------------------------------------------------------
 
 void check_boot_mailbox_overlap(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom || !device->eeprom->boot_strap) continue;
         const HexData& data = *device->eeprom->boot_strap;
         const auto bytes = data.bytes();
@@ -290,7 +291,7 @@ constexpr Rule eeprom_boot_mailbox_overlap{
 // ---- eeprom-category ------------------------------------------------------------------------
 
 void check_category(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->eeprom) continue;
         for (const auto& cat : device->eeprom->categories) {
             const bool has_cat_no = cat.cat_no_pos.known();
@@ -331,7 +332,7 @@ constexpr std::size_t sii_ports = 4;
 bool is_port_letter(char letter) { return letter == 'Y' || letter == 'H' || letter == 'K' || letter == ' ' || letter == 'B'; }
 
 void check_physics_port(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         const std::string& physics = device->physics;
         if (physics.size() > sii_ports)
             context.report(device->pos, device_label(*device) + ": Physics \"" + excerpt(physics) + "\" names " +

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/esc_controller.hpp"
 #include "check/queries.hpp"
 #include "check/sm_roles.hpp"
@@ -32,7 +33,7 @@ std::string fmmu_label(const Fmmu& fmmu, std::size_t number) {
 // ---- fmmu-type-unknown ----------------------------------------------------------------------
 
 void check_type(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         for (std::size_t n = 0; n < device->fmmus.size(); ++n) {
             const Fmmu& fmmu = device->fmmus[n];
             // An empty Fmmu is an unused FMMU (SII FMMU category value 0), as Beckhoff writes <Fmmu/>.
@@ -64,7 +65,7 @@ constexpr Rule fmmu_type_unknown{
 // ---- fmmu-sm-reference ----------------------------------------------------------------------
 
 void check_sm_reference(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         for (std::size_t n = 0; n < device->fmmus.size(); ++n) {
             const Fmmu& fmmu = device->fmmus[n];
             if (!fmmu.sm) continue;
@@ -115,7 +116,7 @@ bool carries_data(const Device& device, std::size_t number) {
 }
 
 void check_missing(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         bool has_outputs_fmmu = false;
         bool has_inputs_fmmu = false;
         for (const auto& fmmu : device->fmmus) {
@@ -167,7 +168,7 @@ constexpr Rule fmmu_missing{
 // ---- fmmu-count -------------------------------------------------------------------------------
 
 void check_fmmu_count(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document))
+    for (const Device* device : context.cache().devices(document))
         report_blocks_past_limit(*device, device->fmmus, "FmmuCount", "FMMUs", "FMMU", context);
 }
 

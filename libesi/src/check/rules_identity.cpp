@@ -93,11 +93,11 @@ bool start_tag_has_attribute(std::string_view text, std::size_t at, std::string_
 
 // Type elements of devices that lack `attribute` (absent, not merely malformed), in document order.
 template <class F>
-void for_each_type_without(const EsiDocument& document, std::string_view attribute,
+void for_each_type_without(const EsiDocument& document, RuleContext& context, std::string_view attribute,
                            std::optional<std::uint32_t> DeviceIdentity::*field, F&& f) {
     std::optional<OffsetCursor> cursor;
     if (document.source) cursor.emplace(*document.source);
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->type.pos.known() || device->type.*field || is_passive(*device)) continue;
         if (cursor) {
             const std::optional<std::size_t> at = cursor->offset_of(device->type.pos);
@@ -167,7 +167,7 @@ constexpr Rule identity_vendor_id_zero{
 // ---- identity-product-code-missing ----------------------------------------------------------
 
 void check_product_code_missing(const EsiDocument& document, RuleContext& context) {
-    for_each_type_without(document, "ProductCode", &DeviceIdentity::product_code, [&](const Device& device) {
+    for_each_type_without(document, context, "ProductCode", &DeviceIdentity::product_code, [&](const Device& device) {
         context.report(device.type.pos, device_label(device) +
                                             " has no ProductCode; masters identify the device by the product code in "
                                             "SII words 0x0A-0x0B and cannot match this description");
@@ -192,7 +192,7 @@ constexpr Rule identity_product_code_missing{
 // ---- identity-revision-missing --------------------------------------------------------------
 
 void check_revision_missing(const EsiDocument& document, RuleContext& context) {
-    for_each_type_without(document, "RevisionNo", &DeviceIdentity::revision_no, [&](const Device& device) {
+    for_each_type_without(document, context, "RevisionNo", &DeviceIdentity::revision_no, [&](const Device& device) {
         context.report(device.type.pos, device_label(device) +
                                             " has no RevisionNo; masters check the revision in SII words 0x0C-0x0D "
                                             "against it (CheckRevisionNo) and the conformance tool requires it");

@@ -419,7 +419,7 @@ constexpr Rule initcmd_pdo_transition{
 void check_complete_access_unsupported(const EsiDocument& document, RuleContext& context) {
     // Devices only: a module's commands go to the device it is plugged into, whose CoE element
     // declares complete access, and that device is not known here.
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->mailbox || !device->mailbox->coe) continue;
         const CoeProtocol& coe = *device->mailbox->coe;
         if (coe.complete_access.value_or(false)) continue;

@@ -2,6 +2,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/queries.hpp"
 #include "check/sm_roles.hpp"
 
@@ -12,7 +13,7 @@ namespace {
 // ---- mailbox-data-link-layer ----------------------------------------------------------------
 
 void check_data_link_layer(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->mailbox) continue;
         const Mailbox& mailbox = *device->mailbox;
         if (mailbox.data_link_layer && *mailbox.data_link_layer) continue;
@@ -41,7 +42,7 @@ constexpr Rule mailbox_data_link_layer{
 // ---- mailbox-sm-disabled --------------------------------------------------------------------
 
 void check_sm_disabled(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->mailbox || device->mailbox->protocol_bits() == 0) continue;
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
             const SyncManager& sm = device->sms[n];
@@ -76,7 +77,7 @@ constexpr Rule mailbox_sm_disabled{
 // ---- mailbox-sm-missing ---------------------------------------------------------------------
 
 void check_sm_missing(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         // A Mailbox that names no protocol declares nothing to carry (mailbox-protocol-missing).
         if (!device->mailbox || device->mailbox->protocol_bits() == 0) continue;
         bool has_out = false;
@@ -115,7 +116,7 @@ constexpr Rule mailbox_sm_missing{
 // ---- mailbox-protocol-missing ---------------------------------------------------------------
 
 void check_protocol_missing(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         if (!device->mailbox || device->mailbox->protocol_bits() != 0) continue;
         context.report(device->mailbox->pos,
                        "Mailbox names no protocol (AoE, EoE, CoE, FoE, SoE, VoE); the SII mailbox protocol word 0x1C would "

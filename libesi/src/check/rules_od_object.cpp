@@ -1,8 +1,7 @@
 // Rules of the od area on the objects of a Dictionary: presence of the mandatory objects,
 // duplicates, flag values, and default/minimum/maximum values against the entry they belong to.
-#include <initializer_list>
+#include <algorithm>
 #include <string>
-#include <unordered_map>
 
 #include "check/areas.hpp"
 #include "check/od_scope.hpp"
@@ -37,11 +36,13 @@ void for_each_flags(const Dictionary& dictionary, F&& f) {
         if (object.flags) f(*object.flags);
 }
 
-bool one_of(std::string_view value, std::initializer_list<std::string_view> allowed) {
-    for (auto a : allowed)
-        if (value == a) return true;
-    return false;
+// The values ETG.2000 ObjectType/Flags allows. Compared with literals, which the compiler turns
+// into a length test and one load: every object and SubItem of a Dictionary has flags.
+bool is_access(std::string_view value) { return value == "ro" || value == "rw" || value == "wo"; }
+bool is_pdo_mapping(std::string_view value) {
+    return value == "R" || value == "T" || value == "RT" || value == "TR" || value == "r" || value == "t" || value == "rt" || value == "tr";
 }
+bool is_category(std::string_view value) { return value == "m" || value == "o" || value == "c"; }
 
 // A value of an entry, where its default, minimum and maximum come from.
 struct EntryValues {
@@ -78,25 +79,37 @@ struct EntryName {
     }
 };
 
+// The length check of one DefaultData/MinData/MaxData whose byte count differs from the size of
+// the entry (`bits`): strings and byte arrays may be given shorter than their maximum length, and
+// data that is not hex gives no value at all.
+void judge_data_length(RuleContext& context, const HexData& data, std::string_view element, const EntryName& name,
+                       std::string_view type_name, const BasicType* basic, std::uint64_t bits, SourcePos fallback) {
+    const std::uint64_t bytes = (bits + 7) / 8;
+    const std::uint64_t length = data.byte_length();
+    // (Only a name starting with ARRAY can parse as an array; the test spares a parse.)
+    const bool variable = !basic || basic->type_class == TypeClass::visible_string || basic->type_class == TypeClass::octet_string ||
+                          basic->type_class == TypeClass::unicode_string ||
+                          (trim(type_name).starts_with("ARRAY") && parse_type_name(type_name).kind == TypeName::Kind::array);
+    if ((variable && length <= bytes) || !data.valid()) return;
+    context.report(data.pos.line ? data.pos : fallback,
+                   std::string(element) + " of " + name.text() + " is " + std::to_string(length) + (length == 1 ? " byte" : " bytes") +
+                       " but the entry (" + std::string(type_name) + ", " + bits_text(bits) + ") is " + (variable ? "at most " : "") +
+                       std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes"));
+}
+
+// Whether an entry has values whose length is judged: data or a DefaultString.
+bool has_lengths(const EntryValues& values) { return values.default_data || values.min_data || values.max_data || values.default_string; }
+
 // Length checks of DefaultData/MinData/MaxData and DefaultString for an entry of `bits` bits.
 void check_lengths(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
                    const BasicType* basic, std::uint64_t bits, SourcePos fallback) {
     if (bits == 0) return;
     const std::uint64_t bytes = (bits + 7) / 8;
-    // Strings and byte arrays may be given shorter than their maximum length.
-    // (Only a name starting with ARRAY can parse as an array; the test spares a parse per entry.)
-    const bool variable = !basic || basic->type_class == TypeClass::visible_string || basic->type_class == TypeClass::octet_string ||
-                          basic->type_class == TypeClass::unicode_string ||
-                          (trim(type_name).starts_with("ARRAY") && parse_type_name(type_name).kind == TypeName::Kind::array);
     const auto check = [&](const std::optional<HexData>& data, std::string_view element) {
-        // Empty data (<DefaultData/>) gives no value at all.
-        if (!data || !data->valid() || data->text.empty()) return;
-        const std::uint64_t length = data->byte_length();
-        if (length == bytes || (variable && length <= bytes)) return;
-        context.report(data->pos.line ? data->pos : fallback,
-                       std::string(element) + " of " + name.text() + " is " + std::to_string(length) + (length == 1 ? " byte" : " bytes") +
-                           " but the entry (" + std::string(type_name) + ", " + bits_text(bits) + ") is " +
-                           (variable ? "at most " : "") + std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes"));
+        // Empty data (<DefaultData/>) gives no value at all. Nearly every value has the entry's
+        // length, which is all this tests; the rest is judge_data_length's.
+        if (!data || data->text.empty() || data->byte_length() == bytes) return;
+        judge_data_length(context, *data, element, name, type_name, basic, bits, fallback);
     };
     check(values.default_data, "DefaultData");
     check(values.min_data, "MinData");
@@ -119,7 +132,8 @@ Reading read_values(const EntryValues& values, const ValueFormat& format, bool a
     const std::uint64_t bytes = (format.bit_size + 7) / 8;
     const auto pick = [&](const std::optional<Number>& value, const std::optional<HexData>& data) -> std::optional<Number> {
         if (value) return as_bit_patterns ? normalized(*value, format) : *value;
-        if (data && data->valid() && data->byte_length() == bytes) return number_from_data(*data, format);
+        // number_from_data reads nothing from data that is not hex.
+        if (data && data->byte_length() == bytes) return number_from_data(*data, format);
         return std::nullopt;
     };
     Reading r{pick(values.default_value, values.default_data), pick(values.min_value, values.min_data),
@@ -146,6 +160,13 @@ std::optional<std::string> range_violation(const Reading& r, const ValueFormat& 
     return std::nullopt;
 }
 
+// Without MinValue/MaxValue (or their data) only a DefaultValue can be out of range: a default
+// given as data is read as a bit pattern of the entry's width, which always fits the type. Most
+// entries of real dictionaries are such, and are not read at all.
+bool may_be_out_of_range(const EntryValues& values) {
+    return values.default_value || values.min_value || values.min_data || values.max_value || values.max_data;
+}
+
 void check_range(RuleContext& context, const EntryValues& values, const EntryName& name, std::string_view type_name,
                  const BasicType* basic, std::uint64_t bits, SourcePos pos) {
     if (!basic || !basic->is_integer()) return;
@@ -159,25 +180,37 @@ void check_range(RuleContext& context, const EntryValues& values, const EntryNam
     context.report(pos, *as_patterns);
 }
 
-template <class F>
-void for_each_valued_entry(const EsiDocument& document, RuleContext& context, F&& f) {
-    for (const auto& scope : dictionary_scopes(document)) {
+// Calls f(values, name, type name, basic type, bits, position) for every entry whose values
+// `wanted` accepts: DataType SubItems with values, then the sub-entries of the objects by their
+// layouts. Every sub-entry takes its values from the object's Info or from one of the Info's
+// SubItems, so an object none of whose Infos `wanted` accepts is passed by without its layout.
+template <class Wanted, class F>
+void for_each_valued_entry(const EsiDocument& document, RuleContext& context, Wanted&& wanted, F&& f) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const Dictionary& dictionary = *scope.dictionary;
         const TypeIndex& types = context.cache().types(&dictionary);
         const DictionaryIndex& objects = context.cache().objects(&dictionary);
         for (const auto& type : dictionary.data_types)
             for (const auto& item : type.sub_items) {
                 if (!item.default_data && !item.default_value && !item.default_string && !item.max_value && !item.min_value) continue;
-                f(values_of(item), EntryName{nullptr, 0, false, &type, &item}, std::string_view(item.type), types.basic(item.type),
-                  item.bit_size, item.pos);
+                const EntryValues values = values_of(item);
+                if (!wanted(values)) continue;
+                f(values, EntryName{nullptr, 0, false, &type, &item}, std::string_view(item.type), types.basic(item.type), item.bit_size,
+                  item.pos);
             }
         for (const auto& object : dictionary.objects) {
             if (!object.info) continue;  // no values at all, for the object or its sub-entries
+            const ObjectInfo& info = *object.info;
+            if (!wanted(values_of(info)) &&
+                std::none_of(info.sub_items.begin(), info.sub_items.end(), [&](const ObjectSubItemInfo& s) { return wanted(values_of(s.info)); }))
+                continue;
             const ObjectLayout& layout = objects.layout(object);
             for (const auto& entry : layout.entries) {
                 if (!entry.info) continue;
-                f(values_of(*entry.info), EntryName{&object, entry.subindex, layout.code == ObjectCode::var, nullptr, nullptr},
-                  std::string_view(entry.type), entry.basic, entry.bit_size, entry.info->pos);
+                const EntryValues values = values_of(*entry.info);
+                if (!wanted(values)) continue;
+                f(values, EntryName{&object, entry.subindex, layout.code == ObjectCode::var, nullptr, nullptr}, std::string_view(entry.type),
+                  entry.basic, entry.bit_size, entry.info->pos);
             }
         }
     }
@@ -256,16 +289,25 @@ constexpr Rule od_mandatory_object_offline{
 
 // ---- od-duplicate-object --------------------------------------------------------------------
 
+// The first Object of that index that has an Index element (one without is the reader's finding).
+const Object* first_declared(const Dictionary& dictionary, const DictionaryIndex& objects, std::uint32_t index) {
+    const Object* first = objects.object(index);
+    if (first && first->index_pos.line != 0) return first;
+    for (const auto& object : dictionary.objects)
+        if (object.index == index && object.index_pos.line != 0) return &object;
+    return nullptr;
+}
+
 void check_duplicate_object(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
-        std::unordered_map<std::uint32_t, const Object*> seen;
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
+        const DictionaryIndex& objects = context.cache().objects(scope.dictionary);
         for (const auto& object : scope.dictionary->objects) {
             if (object.index_pos.line == 0) continue;  // no Index: reported by the reader
-            const auto [it, inserted] = seen.emplace(object.index, &object);
-            if (inserted) continue;
+            const Object* first = first_declared(*scope.dictionary, objects, object.index);
+            if (first == &object) continue;
             context.report(object.index_pos, "Object " + object_address(object.index) + " is declared twice in this Dictionary",
-                           {context.note(it->second->index_pos, "first declared here")},
-                           remove_identical_copy(document, it->second->pos, object.pos, "remove the identical copy of the Object"));
+                           {context.note(first->index_pos, "first declared here")},
+                           remove_identical_copy(document, first->pos, object.pos, "remove the identical copy of the Object"));
         }
     }
 }
@@ -287,14 +329,13 @@ constexpr Rule od_duplicate_object{
 // ---- od-flags-value -------------------------------------------------------------------------
 
 void check_flags_value(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         for_each_flags(*scope.dictionary, [&](const ObjectFlags& flags) {
-            // ETG.2000 ObjectType/Flags enumerations.
-            if (flags.access && !one_of(*flags.access, {"ro", "rw", "wo"}))
+            if (flags.access && !is_access(*flags.access))
                 context.report(flags.pos, "Access '" + *flags.access + "' is not ro, rw or wo");
-            if (flags.pdo_mapping && !one_of(*flags.pdo_mapping, {"R", "T", "RT", "TR", "r", "t", "rt", "tr"}))
+            if (flags.pdo_mapping && !is_pdo_mapping(*flags.pdo_mapping))
                 context.report(flags.pos, "PdoMapping '" + *flags.pdo_mapping + "' is not R, T, RT or TR (lower case for optional mapping)");
-            if (flags.category && !one_of(*flags.category, {"m", "o", "c"}))
+            if (flags.category && !is_category(*flags.category))
                 context.report(flags.pos, "Category '" + *flags.category + "' is not m, o or c");
         });
     }
@@ -316,8 +357,8 @@ constexpr Rule od_flags_value{
 // ---- od-default-length ----------------------------------------------------------------------
 
 void check_default_length(const EsiDocument& document, RuleContext& context) {
-    for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
-                                                 const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+    for_each_valued_entry(document, context, has_lengths, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
+                                                              const BasicType* basic, std::uint64_t bits, SourcePos pos) {
         check_lengths(context, values, name, type_name, basic, bits, pos);
     });
 }
@@ -341,8 +382,9 @@ constexpr Rule od_default_length{
 // ---- od-default-range -----------------------------------------------------------------------
 
 void check_default_range(const EsiDocument& document, RuleContext& context) {
-    for_each_valued_entry(document, context, [&](const EntryValues& values, const EntryName& name, std::string_view type_name,
-                                                 const BasicType* basic, std::uint64_t bits, SourcePos pos) {
+    for_each_valued_entry(document, context, may_be_out_of_range, [&](const EntryValues& values, const EntryName& name,
+                                                                       std::string_view type_name, const BasicType* basic,
+                                                                       std::uint64_t bits, SourcePos pos) {
         check_range(context, values, name, type_name, basic, bits, pos);
     });
 }

@@ -1,9 +1,9 @@
 // Rules of the od area about the shape of the offline Dictionary as a whole: the type of the
 // entry count every record and array starts with, and how many Dictionaries a device has.
-#include <set>
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/od_scope.hpp"
 #include "esi/number.hpp"
 
@@ -26,26 +26,35 @@ constexpr std::uint32_t number_of_pdos_supported = 0x1004;
 // the STÖBER EtherCAT manuals). Only objects outside it are held to the count.
 bool manufacturer_specific(std::uint32_t index) { return index >= 0x2000 && index <= 0x5FFF; }
 
+// The SubItem holding a record's entry count: its first with SubIdx 0; nullptr when none.
+const DataTypeSubItem* count_item(const DataType& type) {
+    for (const auto& item : type.sub_items)
+        if (item.subindex == 0u) return &item;
+    return nullptr;
+}
+
+// Whether an object of the standardised areas has this type.
+bool used_by_standard_object(const Dictionary& dictionary, std::string_view type_name) {
+    for (const auto& object : dictionary.objects)
+        if (!manufacturer_specific(object.index) && object.index != number_of_pdos_supported && trim(object.type) == type_name) return true;
+    return false;
+}
+
 void check_subindex0_type(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
-        // The DataTypes that objects of the standardised areas use.
-        std::set<std::string_view, std::less<>> standard_types;
-        for (const auto& object : scope.dictionary->objects)
-            if (!manufacturer_specific(object.index) && object.index != number_of_pdos_supported)
-                standard_types.insert(trim(object.type));
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         for (const auto& type : scope.dictionary->data_types) {
             // Only records and array holders (more than one SubItem) have an entry count at sub-index 0.
-            if (type.sub_items.size() < 2 || !standard_types.count(type.name)) continue;
-            for (const auto& item : type.sub_items) {
-                if (item.subindex != 0u) continue;
-                const std::string_view name = trim(item.type);
-                if (is_unsigned8(name) && item.bit_size == 8) break;
-                context.report(item.pos, "DataType " + type.name + ": sub-index 0 ('" + item.name + "') is " +
-                                             (name.empty() ? std::string("untyped") : std::string(name)) + " of " +
-                                             std::to_string(item.bit_size) +
-                                             " bits; it holds the number of entries, which is USINT (UNSIGNED8, 8 bits)");
-                break;
-            }
+            if (type.sub_items.size() < 2) continue;
+            const DataTypeSubItem* item = count_item(type);
+            if (!item) continue;
+            const std::string_view name = trim(item->type);
+            if (is_unsigned8(name) && item->bit_size == 8) continue;
+            // Looked for only now: nearly every count is right, and then no object needs a look.
+            if (!used_by_standard_object(*scope.dictionary, type.name)) continue;
+            context.report(item->pos, "DataType " + type.name + ": sub-index 0 ('" + item->name + "') is " +
+                                          (name.empty() ? std::string("untyped") : std::string(name)) + " of " +
+                                          std::to_string(item->bit_size) +
+                                          " bits; it holds the number of entries, which is USINT (UNSIGNED8, 8 bits)");
         }
     }
 }

@@ -12,6 +12,7 @@
 #include "check/od_type_sizes.hpp"
 #include "check/od_text.hpp"
 #include "check/od_type_index.hpp"
+#include "check/od_type_references.hpp"
 #include "check/rule_cache.hpp"
 #include "check/source_edit.hpp"
 #include "esi/data_types.hpp"
@@ -20,28 +21,6 @@
 namespace esi::rules {
 
 namespace {
-
-// A place where a Dictionary names a type: an Object's Type, a SubItem's Type, a BaseType.
-struct TypeReference {
-    std::string_view name;
-    SourcePos pos;
-    const Object* object = nullptr;
-    const DataType* data_type = nullptr;
-    const DataTypeSubItem* sub_item = nullptr;
-};
-
-template <class F>
-void for_each_type_reference(const Dictionary& dictionary, F&& f) {
-    for (const auto& type : dictionary.data_types) {
-        if (type.base_type && !trim(*type.base_type).empty())
-            f(TypeReference{trim(*type.base_type), type.pos, nullptr, &type, nullptr});
-        for (const auto& item : type.sub_items)
-            if (!trim(item.type).empty()) f(TypeReference{trim(item.type), item.pos, nullptr, &type, &item});
-    }
-    for (const auto& object : dictionary.objects)
-        if (!trim(object.type).empty())
-            f(TypeReference{trim(object.type), object.type_pos.line ? object.type_pos : object.pos, &object, nullptr, nullptr});
-}
 
 std::string describe(const TypeReference& ref) {
     if (ref.object) return "Object " + object_address(ref.object->index);
@@ -78,13 +57,10 @@ std::string also_used(std::size_t count) {
 // ---- od-type-unresolved ---------------------------------------------------------------------
 
 void check_type_unresolved(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
-        const TypeIndex& types = context.cache().types(scope.dictionary);
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         NameFindings findings;
-        for_each_type_reference(*scope.dictionary, [&](const TypeReference& ref) {
-            std::string_view culprit;
-            if (types.status(ref.name, &culprit) == TypeNameStatus::unresolved) findings.add(ref, culprit);
-        });
+        for (const auto& ref : context.cache().referenced_types(*scope.dictionary))
+            if (ref.status == TypeNameStatus::unresolved) findings.add(ref.reference, ref.culprit);
         for (const auto& f : findings.entries) {
             std::string message = describe(f.first) + " uses type '" + std::string(f.first.name) + "', ";
             message += f.culprit != f.first.name ? "whose element type '" + f.culprit + "'" : std::string("which");
@@ -112,15 +88,12 @@ constexpr Rule od_type_unresolved{
 // ---- od-nonstandard-type-name ---------------------------------------------------------------
 
 void check_nonstandard_type_name(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         // A Dictionary may define a DataType of any name, INT8 included (Beckhoff's SoE
         // dictionaries do); only names nothing defines are faults.
-        const TypeIndex& types = context.cache().types(scope.dictionary);
         NameFindings findings;
-        for_each_type_reference(*scope.dictionary, [&](const TypeReference& ref) {
-            std::string_view culprit;
-            if (types.status(ref.name, &culprit) == TypeNameStatus::nonstandard) findings.add(ref, culprit);
-        });
+        for (const auto& ref : context.cache().referenced_types(*scope.dictionary))
+            if (ref.status == TypeNameStatus::nonstandard) findings.add(ref.reference, ref.culprit);
         for (const auto& f : findings.entries)
             context.report(f.first.pos, describe(f.first) + " uses type '" + f.culprit + "', which is not an ESI type name; the standard name is '" +
                                             std::string(standard_type_name_for(f.culprit)) + "'" + also_used(f.count));
@@ -147,11 +120,11 @@ constexpr Rule od_nonstandard_type_name{
 
 void check_type_cycle(const EsiDocument& document, RuleContext& context) {
     const auto before = [](const SourcePos& a, const SourcePos& b) { return a.line < b.line || (a.line == b.line && a.column < b.column); };
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
         std::unordered_set<const DataType*> seen;
         for (const auto& type : scope.dictionary->data_types) {
-            if (types.find(type.name) != &type || !types.in_base_type_cycle(type) || seen.count(&type)) continue;
+            if (!types.is_first_of_name(type) || !types.in_base_type_cycle(type) || seen.count(&type)) continue;
             // One finding per loop, at the member that comes first in the file; the loop is
             // walked once.
             std::vector<const DataType*> members;
@@ -189,7 +162,7 @@ constexpr Rule od_type_cycle{
 // ---- od-subitem-layout, od-layout-complete-access -----------------------------------------
 
 void check_subitem_layout(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         for (const auto& type : scope.dictionary->data_types) {
             const LayoutFaults faults = layout_faults(type);
             // Past the end: reported once per DataType, at the first such SubItem in the file.
@@ -284,7 +257,7 @@ constexpr Rule od_layout_complete_access{
 // ---- od-array-size --------------------------------------------------------------------------
 
 void check_array_size(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const DataTypeSizes& sizes = context.cache().type_sizes(*scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
             const ArraySize& size = sizes.array(type);
@@ -328,8 +301,20 @@ constexpr Rule od_array_size{
 
 // ---- od-bitsize -----------------------------------------------------------------------------
 
+// implied_bit_size for the name of a DataType, most of which are plain names (DT1018) that imply
+// nothing: only basic type names, STRING(n) and ARRAY [..] OF names are worth a parse.
+std::optional<std::uint64_t> size_implied_by_name(std::string_view name) {
+    const std::string_view trimmed = trim(name);
+    if (const BasicType* basic = find_basic_type(trimmed)) {
+        if (basic->bit_size == 0) return std::nullopt;
+        return basic->bit_size;
+    }
+    if (!trimmed.starts_with("STRING") && !trimmed.starts_with("ARRAY")) return std::nullopt;
+    return implied_bit_size(name);
+}
+
 void check_bitsize(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
         const DataTypeSizes& sizes = context.cache().type_sizes(*scope.dictionary);
         // A user's size that differs from a DataType whose own BitSize is the cause (an array
@@ -339,28 +324,37 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
             const DataType* t = types.find(trim(name));
             return t && sizes.own_size_accounts_for_users(*t);
         };
+        // The references come DataType by DataType (its BaseType, then its SubItems), then the
+        // Objects: a finding about a DataType's own name precedes those about its SubItems.
+        const std::vector<ReferencedType>& refs = context.cache().referenced_types(*scope.dictionary);
+        std::size_t r = 0;
         for (const auto& type : scope.dictionary->data_types) {
             // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
-            if (type.bit_size > 0 && types.find(type.name) == &type) {
-                if (const std::optional<std::uint64_t> implied = implied_bit_size(type.name); implied && *implied != type.bit_size)
+            if (type.bit_size > 0 && types.is_first_of_name(type)) {
+                if (const std::optional<std::uint64_t> implied = size_implied_by_name(type.name); implied && *implied != type.bit_size)
                     context.report(type.name_pos.line ? type.name_pos : type.pos, "DataType " + type.name + " has BitSize " +
                                                                                       std::to_string(type.bit_size) + " but " + type.name +
                                                                                       " is " + bits_text(*implied));
             }
-            for (const auto& item : type.sub_items) {
-                if (item.bit_size == 0 || trim(item.type).empty()) continue;
-                const std::optional<std::uint64_t> bits = types.bit_size(item.type);
-                if (!bits || *bits == item.bit_size || type_accounts_for_users(item.type)) continue;
-                context.report(item.pos, "SubItem '" + item.name + "' of DataType " + type.name + " has BitSize " + std::to_string(item.bit_size) +
-                                             " but its type " + std::string(trim(item.type)) + " is " + bits_text(*bits));
+            for (; r < refs.size() && refs[r].reference.data_type == &type; ++r) {
+                const ReferencedType& ref = refs[r];
+                const DataTypeSubItem* item = ref.reference.sub_item;
+                if (!item || item->bit_size == 0) continue;  // the BaseType, or a SubItem without BitSize
+                const std::optional<std::uint64_t>& bits = ref.bit_size;
+                if (!bits || *bits == item->bit_size || type_accounts_for_users(ref.reference.name)) continue;
+                context.report(item->pos, "SubItem '" + item->name + "' of DataType " + type.name + " has BitSize " +
+                                              std::to_string(item->bit_size) + " but its type " + std::string(ref.reference.name) + " is " +
+                                              bits_text(*bits));
             }
         }
-        for (const auto& object : scope.dictionary->objects) {
-            if (object.bit_size == 0 || object.bit_size_pos.line == 0 || trim(object.type).empty()) continue;
-            const std::optional<std::uint64_t> bits = types.bit_size(object.type);
-            if (!bits || *bits == object.bit_size || type_accounts_for_users(object.type)) continue;
+        for (; r < refs.size(); ++r) {
+            const ReferencedType& ref = refs[r];
+            const Object& object = *ref.reference.object;
+            if (object.bit_size == 0 || object.bit_size_pos.line == 0) continue;
+            const std::optional<std::uint64_t>& bits = ref.bit_size;
+            if (!bits || *bits == object.bit_size || type_accounts_for_users(ref.reference.name)) continue;
             context.report(object.bit_size_pos, "Object " + object_address(object.index) + " has BitSize " + std::to_string(object.bit_size) +
-                                                    " but its type " + std::string(trim(object.type)) + " is " + bits_text(*bits));
+                                                    " but its type " + std::string(ref.reference.name) + " is " + bits_text(*bits));
         }
     }
 }
@@ -385,11 +379,12 @@ constexpr Rule od_bitsize{
 // ---- od-duplicate-datatype ------------------------------------------------------------------
 
 void check_duplicate_datatype(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : dictionary_scopes(document)) {
+    for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
         for (const auto& type : scope.dictionary->data_types) {
+            if (types.is_first_of_name(type)) continue;
             const DataType* first = types.find(type.name);
-            if (!first || first == &type) continue;
+            if (!first) continue;
             context.report(type.name_pos.line ? type.name_pos : type.pos,
                            "DataType " + type.name + " is defined twice in this Dictionary; masters use one of the definitions",
                            {context.note(first->name_pos.line ? first->name_pos : first->pos, "first defined here")},

@@ -33,7 +33,12 @@ std::optional<std::uint64_t> entry_default(const ObjectEntry& entry) {
 // The defaults of sub-indices 1..n of an array/record object, n being the default of
 // sub-index 0 when given. nullopt when the object states no such defaults.
 std::optional<std::vector<std::uint64_t>> listed_defaults(const ObjectLayout& layout) {
-    std::array<const ObjectEntry*, 256> by_subindex{};
+    // The first entry of each sub-index; only the part up to the highest sub-index is cleared.
+    std::array<const ObjectEntry*, 256> by_subindex;
+    std::uint32_t highest = 0;
+    for (const auto& e : layout.entries)
+        if (e.subindex < by_subindex.size()) highest = std::max(highest, e.subindex);
+    std::fill(by_subindex.begin(), by_subindex.begin() + highest + 1, nullptr);
     for (const auto& e : layout.entries)
         if (e.subindex < by_subindex.size() && !by_subindex[e.subindex]) by_subindex[e.subindex] = &e;
     const ObjectEntry* count_entry = by_subindex[0];
@@ -42,7 +47,7 @@ std::optional<std::vector<std::uint64_t>> listed_defaults(const ObjectLayout& la
     bool any = count.has_value();
     for (std::uint32_t sub = 1; sub <= 255; ++sub) {
         if (count && sub > *count) break;
-        const ObjectEntry* e = by_subindex[sub];
+        const ObjectEntry* e = sub <= highest ? by_subindex[sub] : nullptr;
         const std::optional<std::uint64_t> value = e ? entry_default(*e) : std::nullopt;
         if (!value) {
             if (count) return std::nullopt;  // counted, but a counted entry has no default
@@ -86,7 +91,7 @@ std::string mapping_text(std::uint64_t value) {
 // ---- pdo-assign-default ---------------------------------------------------------------------
 
 void check_assign_default(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         // Modular devices add module PDOs to the assignment as modules are plugged in.
         if (!scope.device || scope.device->slots || !scope.dictionary) continue;
         const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);
@@ -135,7 +140,7 @@ constexpr Rule pdo_assign_default{
 // ---- pdo-mapping-default --------------------------------------------------------------------
 
 void check_mapping_default(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         if (!scope.device || !scope.dictionary) continue;
         const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);
         scope.for_each_pdo([&](const Pdo& pdo) {
@@ -146,32 +151,31 @@ void check_mapping_default(const EsiDocument& document, RuleContext& context) {
                 if (entry.index_invalid || depends_on_slot(entry)) return;
             // A PDO without entries is a placeholder for a mapping configured at run time.
             if (pdo.entries.empty()) return;
-            const std::optional<std::vector<std::uint64_t>> listed = listed_defaults(*dictionary.layout(pdo.index));
+            std::optional<std::vector<std::uint64_t>> listed = listed_defaults(*dictionary.layout(pdo.index));
             if (!listed) return;
-            std::vector<std::uint64_t> defaults = *listed;
+            std::vector<std::uint64_t> defaults = std::move(*listed);
             std::vector<std::uint64_t> declared_values;
+            declared_values.reserve(pdo.entries.size());
             for (const auto& entry : pdo.entries) declared_values.push_back(mapping_value(entry));
             // Trailing padding (rounding the PDO up to whole bytes) is left out on one side by some
             // vendors (Beckhoff EL2xxx: four BOOLs in the ESI, plus a 4-bit gap in 0x1600).
             strip_trailing_padding(defaults);
             strip_trailing_padding(declared_values);
-            const std::string pdo_name = std::string(pdo.element_name()) + " " + object_address(pdo.index);
-            const std::vector<DiagnosticNote> notes = {context.note(pdo.pos, pdo_name + " is declared here")};
+            const auto pdo_name = [&] { return std::string(pdo.element_name()) + " " + object_address(pdo.index); };
+            const auto report = [&](const std::string& message) {
+                context.report(info_or_object(*object), message, {context.note(pdo.pos, pdo_name() + " is declared here")});
+            };
             const std::size_t common = std::min(defaults.size(), declared_values.size());
             for (std::size_t k = 0; k < common; ++k) {
                 const std::uint64_t declared = declared_values[k];
                 if (defaults[k] == declared) continue;
-                context.report(info_or_object(*object),
-                               "the default of mapping object " + object_address(pdo.index) + " maps " + mapping_text(defaults[k]) +
-                                   " as entry " + std::to_string(k + 1) + ", but " + pdo_name + " lists " + mapping_text(declared),
-                               notes);
+                report("the default of mapping object " + object_address(pdo.index) + " maps " + mapping_text(defaults[k]) + " as entry " +
+                       std::to_string(k + 1) + ", but " + pdo_name() + " lists " + mapping_text(declared));
                 return;
             }
             if (defaults.size() == declared_values.size()) return;
-            context.report(info_or_object(*object), "the default of mapping object " + object_address(pdo.index) + " maps " +
-                                                        std::to_string(defaults.size()) + " entries, but " + pdo_name + " lists " +
-                                                        std::to_string(declared_values.size()),
-                           notes);
+            report("the default of mapping object " + object_address(pdo.index) + " maps " +
+                   std::to_string(defaults.size()) + " entries, but " + pdo_name() + " lists " + std::to_string(declared_values.size()));
         });
     }
 }

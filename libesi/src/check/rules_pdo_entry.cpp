@@ -15,21 +15,19 @@ namespace esi::rules {
 namespace {
 
 template <class F>
-void for_each_entry(const EsiDocument& document, F&& f) {
-    for (const auto& scope : pdo_scopes(document))
+void for_each_entry(const EsiDocument& document, RuleContext& context, F&& f) {
+    for (const auto& scope : context.cache().pdo_scopes(document))
         scope.for_each_pdo([&](const Pdo& pdo) {
             for (const auto& entry : pdo.entries) f(scope, pdo, entry);
         });
 }
 
-// The same, with what DataTypes mean under the owner's Dictionary at hand.
+// The same, with what the entry's DataType means under its owner's Dictionary.
 template <class F>
 void for_each_typed_entry(const EsiDocument& document, RuleContext& context, F&& f) {
-    for (const auto& scope : pdo_scopes(document)) {
-        EntryTypes& types = context.cache().entry_types(scope.dictionary);
-        for (const auto* list : {scope.rx_pdos, scope.tx_pdos})
-            for (const auto& pdo : *list)
-                for (const auto& entry : pdo.entries) f(scope, types, entry);
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
+        PdoEntryFacts& entries = context.cache().pdo_entries(scope);
+        for (std::size_t i = 0; i < entries.size(); ++i) f(scope, entries.type(i), entries.entry(i));
     }
 }
 
@@ -45,8 +43,7 @@ std::vector<std::string_view> basic_type_names() {
 
 void check_entry_type_unknown(const EsiDocument& document, RuleContext& context) {
     static const std::vector<std::string_view> names = basic_type_names();
-    for_each_typed_entry(document, context, [&](const PdoScope& scope, EntryTypes& types, const PdoEntry& entry) {
-        const EntryType& type = types.of(entry);
+    for_each_typed_entry(document, context, [&](const PdoScope& scope, const EntryType& type, const PdoEntry& entry) {
         if (!type.present) {
             // Padding needs no DataType; a mapped value does, and an empty element says nothing.
             if (entry.data_type && !entry.is_padding())
@@ -79,8 +76,7 @@ constexpr Rule pdo_entry_type_unknown{
 };
 
 void check_entry_type_spelling(const EsiDocument& document, RuleContext& context) {
-    for_each_typed_entry(document, context, [&](const PdoScope&, EntryTypes& types, const PdoEntry& entry) {
-        const EntryType& type = types.of(entry);
+    for_each_typed_entry(document, context, [&](const PdoScope&, const EntryType& type, const PdoEntry& entry) {
         if (!type.present || type.standard_name.empty()) return;
         const std::string& text = *entry.data_type;
         const bool whole = type.nonstandard_name == trim(text);
@@ -118,10 +114,9 @@ constexpr Rule pdo_entry_type_spelling{
 // ---- pdo-entry-bitlen-type ------------------------------------------------------------------
 
 void check_entry_bitlen_type(const EsiDocument& document, RuleContext& context) {
-    for_each_typed_entry(document, context, [&](const PdoScope&, EntryTypes& types, const PdoEntry& entry) {
+    for_each_typed_entry(document, context, [&](const PdoScope&, const EntryType& type, const PdoEntry& entry) {
         // BitLen 0 is a missing or unreadable BitLen (the reader reports it) or an empty slot.
         if (entry.is_padding() || entry.bit_len == 0 || entry.bit_len_pos.line == 0) return;
-        const EntryType& type = types.of(entry);
         if (!type.known || type.bit_size == 0 || type.bit_size == entry.bit_len) return;
         context.report(entry.bit_len_pos, entry_label(entry) + " has BitLen " + std::to_string(entry.bit_len) + " but " +
                                               *entry.data_type + " is " + bits_text(type.bit_size));
@@ -145,7 +140,7 @@ constexpr Rule pdo_entry_bitlen_type{
 // ---- pdo-padding-subindex -------------------------------------------------------------------
 
 void check_padding_subindex(const EsiDocument& document, RuleContext& context) {
-    for_each_entry(document, [&](const PdoScope&, const Pdo&, const PdoEntry& entry) {
+    for_each_entry(document, context, [&](const PdoScope&, const Pdo&, const PdoEntry& entry) {
         if (!entry.is_padding() || entry.effective_subindex() == 0) return;
         context.report(entry.pos, "Padding entry (Index 0) has SubIndex " + std::to_string(entry.effective_subindex()) +
                                       "; a gap in a PDO is mapped as #x0000:00 with only its BitLen");
@@ -169,7 +164,7 @@ constexpr Rule pdo_padding_subindex{
 // ---- pdo-padding-bitlen-zero ----------------------------------------------------------------
 
 void check_padding_bitlen_zero(const EsiDocument& document, RuleContext& context) {
-    for_each_entry(document, [&](const PdoScope&, const Pdo& pdo, const PdoEntry& entry) {
+    for_each_entry(document, context, [&](const PdoScope&, const Pdo& pdo, const PdoEntry& entry) {
         // BitLen 0 without a BitLen element is a missing BitLen, which the reader reports.
         if (!entry.is_padding() || entry.bit_len != 0 || entry.bit_len_pos.line == 0) return;
         context.report(entry.bit_len_pos, "Padding entry (Index 0) of " + std::string(pdo.element_name()) + " " + object_address(pdo.index) +
@@ -198,7 +193,7 @@ constexpr Rule pdo_padding_bitlen_zero{
 // ---- pdo-entry-alignment --------------------------------------------------------------------
 
 void check_entry_alignment(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         scope.for_each_pdo([&](const Pdo& pdo) {
             std::uint64_t offset = 0;
             for (const auto& entry : pdo.entries) {

@@ -38,24 +38,32 @@ struct MappedEntry {
     const PdoScope& scope;
     const DictionaryIndex& dictionary;
     const TypeIndex& types;
-    EntryTypes& entry_types;
+    PdoEntryFacts& facts;
+    std::size_t position;  // of the entry in `facts`
     const Pdo& pdo;
     const PdoEntry& entry;
+
+    // The object the entry maps; nullptr when the Dictionary has none of its index.
+    [[nodiscard]] const Object* object() const { return facts.object(position); }
+    // The object sub-entry the entry maps; nullptr when the object or sub-index is missing.
+    [[nodiscard]] const ObjectEntry* target() const { return facts.target(position); }
+    // What the entry's DataType means.
+    [[nodiscard]] const EntryType& type() const { return facts.type(position); }
 };
 
 template <class F>
 void for_each_mapped_entry(const EsiDocument& document, RuleContext& context, bool complete_dictionaries_only, F&& f) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         if (!scope.dictionary || scope.dictionary->objects.empty()) continue;
         if (complete_dictionaries_only && !scope.dictionary_is_complete) continue;
         const DictionaryIndex& dictionary = context.cache().objects(scope.dictionary);
         const TypeIndex& types = context.cache().types(scope.dictionary);
-        EntryTypes& entry_types = context.cache().entry_types(scope.dictionary);
-        scope.for_each_pdo([&](const Pdo& pdo) {
-            if (is_oversampling(pdo)) return;
-            for (const auto& entry : pdo.entries)
-                if (addresses_an_object(entry)) f(MappedEntry{scope, dictionary, types, entry_types, pdo, entry});
-        });
+        PdoEntryFacts& entries = context.cache().pdo_entries(scope);
+        for (std::size_t i = 0; i < entries.size(); ++i) {
+            const Pdo& pdo = entries.pdo(i);
+            const PdoEntry& entry = entries.entry(i);
+            if (!is_oversampling(pdo) && addresses_an_object(entry)) f(MappedEntry{scope, dictionary, types, entries, i, pdo, entry});
+        }
     }
 }
 
@@ -92,23 +100,22 @@ std::string target_label(const Object& object, const ObjectEntry& target) {
 
 void check_entry_object_missing(const EsiDocument& document, RuleContext& context) {
     for_each_mapped_entry(document, context, true, [&](const MappedEntry& m) {
-        const DictionaryIndex& dictionary = m.dictionary;
         const PdoEntry& entry = m.entry;
         if (is_profile_infrastructure(entry.index)) return;
-        const Object* object = dictionary.object(entry.index);
+        const Object* object = m.object();
         if (!object) {
             context.report(index_or_entry(entry), entry_label(entry) + " maps object " + object_address(entry.index) +
                                                       ", which the device's Dictionary does not contain");
             return;
         }
-        const ObjectLayout* layout = dictionary.layout(entry.index);
-        if (layout->entry(entry.effective_subindex())) return;
+        if (m.target()) return;
+        const ObjectLayout& layout = m.dictionary.layout(*object);
         // An object whose type does not resolve has no known sub-entries (od-type-unresolved says why).
         const DataType* type = m.types.find(object->type);
         if (m.types.status(object->type) != TypeNameStatus::resolved || (type && type->base_type && m.types.in_base_type_cycle(*type)))
             return;
         context.report(index_or_entry(entry), entry_label(entry) + " maps subindex " + std::to_string(entry.effective_subindex()) +
-                                                  " of " + object_label(*object) + ", which has " + subindex_list(*layout),
+                                                  " of " + object_label(*object) + ", which has " + subindex_list(layout),
                        {context.note(object->pos, "the object is declared here")});
     });
 }
@@ -135,18 +142,17 @@ constexpr Rule pdo_entry_object_missing{
 
 void check_entry_object_type(const EsiDocument& document, RuleContext& context) {
     for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
-        const DictionaryIndex& dictionary = m.dictionary;
         const PdoEntry& entry = m.entry;
-        const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
+        const ObjectEntry* target = m.target();
         if (!target || !target->basic) return;
-        const EntryType& type = m.entry_types.of(entry);
+        const EntryType& type = m.type();
         if (!type.known || !type.basic) return;
         // A size difference is pdo-entry-object-bitlen's finding, which names both types.
         if (target->bit_size != 0 && entry.bit_len != target->bit_size) return;
         const ValueKind written = value_kind(*type.basic);
         const ValueKind actual = value_kind(*target->basic);
         if (written == actual || written == ValueKind::other || actual == ValueKind::other) return;
-        const Object* object = dictionary.object(entry.index);
+        const Object* object = m.object();
         context.report(entry.data_type_pos.line ? entry.data_type_pos : entry.pos,
                        entry_label(entry) + " has DataType " + *entry.data_type + " (" + std::string(to_string(written)) + ") but " +
                            target_label(*object, *target) + " is " + target->type + " (" + std::string(to_string(actual)) +
@@ -207,10 +213,10 @@ BitLenFit bitlen_fit(const MappedEntry& m, const ObjectEntry*& target) {
     const PdoEntry& entry = m.entry;
     target = nullptr;
     if (entry.bit_len == 0 || entry.bit_len_pos.line == 0) return BitLenFit::agrees;
-    target = m.dictionary.entry(entry.index, entry.effective_subindex());
+    target = m.target();
     if (!target || target->bit_size == 0 || target->bit_size == entry.bit_len) return BitLenFit::agrees;
     // When BitLen already disagrees with the entry's own DataType, pdo-entry-bitlen-type reports it.
-    const EntryType& type = m.entry_types.of(entry);
+    const EntryType& type = m.type();
     if (type.known && type.bit_size != 0 && type.bit_size != entry.bit_len) return BitLenFit::agrees;
     if (entry.bit_len > target->bit_size) return BitLenFit::wider;
     if (entry.bit_len == 1 && target->bit_size == 8 && target->basic && target->basic->esi_name == "BOOL") return BitLenFit::bool_as_bit;
@@ -220,7 +226,7 @@ BitLenFit bitlen_fit(const MappedEntry& m, const ObjectEntry*& target) {
 
 void report_bitlen(RuleContext& context, const MappedEntry& m, const ObjectEntry& target, std::string_view consequence) {
     const PdoEntry& entry = m.entry;
-    const Object* object = m.dictionary.object(entry.index);
+    const Object* object = m.object();
     std::string written = entry.data_type && !entry.data_type->empty() ? " (" + *entry.data_type + ")" : "";
     context.report(entry.bit_len_pos, entry_label(entry) + " has BitLen " + std::to_string(entry.bit_len) + written + " but " +
                                           target_label(*object, target) + " is " + target.type + ", " + bits_text(target.bit_size) +
@@ -289,12 +295,11 @@ constexpr Rule pdo_entry_narrower_than_object{
 
 void check_entry_not_mappable(const EsiDocument& document, RuleContext& context) {
     for_each_mapped_entry(document, context, false, [&](const MappedEntry& m) {
-        const DictionaryIndex& dictionary = m.dictionary;
         const Pdo& pdo = m.pdo;
         const PdoEntry& entry = m.entry;
-        const ObjectEntry* target = dictionary.entry(entry.index, entry.effective_subindex());
+        const ObjectEntry* target = m.target();
         if (!target) return;
-        const Object* object = dictionary.object(entry.index);
+        const Object* object = m.object();
         // The sub-item's own flags win; a record's object-level flags cover sub-items without.
         const std::optional<std::string>* mapping = nullptr;
         if (target->flags && target->flags->pdo_mapping) mapping = &target->flags->pdo_mapping;

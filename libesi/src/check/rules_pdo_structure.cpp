@@ -2,10 +2,10 @@
 // references, duplicates, Exclude references and the 8-bit limits of the CoE mapping and assignment
 // objects.
 #include <algorithm>
-#include <map>
-#include <unordered_set>
+#include <vector>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/od_text.hpp"
 #include "check/pdo_scope.hpp"
 #include "check/queries.hpp"
@@ -59,8 +59,8 @@ struct OutOfArea {
 // sits (ETG.2000 DependOnSlot), not by its base; a module the document plugs into no device is
 // judged by its base index, and then nothing says whether a master writes it.
 template <class F>
-void for_each_out_of_area(const EsiDocument& document, F&& f) {
-    for (const auto& scope : pdo_scopes(document)) {
+void for_each_out_of_area(const EsiDocument& document, RuleContext& context, F&& f) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         // The ranges are those of CoE mapping objects. Devices without CoE (simple terminals,
         // SoE drives whose MDT/AT carry IDNs) number their PDOs freely in the SII.
         if (scope.device && !(scope.device->mailbox && scope.device->mailbox->coe)) continue;
@@ -99,7 +99,7 @@ std::string out_of_area_message(const OutOfArea& o) {
 }
 
 void check_index_range(const EsiDocument& document, RuleContext& context) {
-    for_each_out_of_area(document, [&](const OutOfArea& o) {
+    for_each_out_of_area(document, context, [&](const OutOfArea& o) {
         if (o.written) context.report(o.pdo.index_pos, out_of_area_message(o));
     });
 }
@@ -127,7 +127,7 @@ constexpr Rule pdo_index_range{
 };
 
 void check_index_area(const EsiDocument& document, RuleContext& context) {
-    for_each_out_of_area(document, [&](const OutOfArea& o) {
+    for_each_out_of_area(document, context, [&](const OutOfArea& o) {
         if (!o.written)
             context.report(o.pdo.index_pos, out_of_area_message(o) + "; the index is a label only, as CoE declares neither "
                                                                      "PdoAssign nor PdoConfig");
@@ -154,7 +154,7 @@ constexpr Rule pdo_index_area{
 // ---- pdo-sm-unknown -------------------------------------------------------------------------
 
 void check_sm_unknown(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         if (!scope.device) continue;  // a module's Sm refers to the SMs of the device it is plugged into
         const Device& device = *scope.device;
         scope.for_each_pdo([&](const Pdo& pdo) {
@@ -181,7 +181,7 @@ constexpr Rule pdo_sm_unknown{
 // ---- pdo-sm-direction -----------------------------------------------------------------------
 
 void check_sm_direction(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         if (!scope.device) continue;
         const Device& device = *scope.device;
         scope.for_each_pdo([&](const Pdo& pdo) {
@@ -235,16 +235,42 @@ bool index_names_one_mapping_object(const PdoScope& scope, const Pdo& a, const P
     return !scope.device || (scope.device->mailbox && scope.device->mailbox->coe);
 }
 
-// Calls f(scope, pdo, first) for every PDO whose index an earlier PDO of its owner already uses.
+// Calls f(scope, pdo, first) for every PDO whose index an earlier PDO of its owner already uses,
+// in the order of the PDOs.
 template <class F>
-void for_each_repeated_index(const EsiDocument& document, F&& f) {
-    for (const auto& scope : pdo_scopes(document)) {
-        std::map<std::uint32_t, const Pdo*> seen;
+void for_each_repeated_index(const EsiDocument& document, RuleContext& context, F&& f) {
+    // The indexed PDOs of an owner sorted by index and, among equal indices, by their order: a
+    // repeat follows the first of its index. Owners have a handful of PDOs and repeats are rare,
+    // so sorting one reused array costs less than a map per owner.
+    struct Indexed {
+        std::uint32_t index;
+        std::size_t order;  // in PdoScope::for_each_pdo
+        const Pdo* pdo;
+    };
+    struct Repeat {
+        std::size_t order;
+        const Pdo* pdo;
+        const Pdo* first;
+    };
+    std::vector<Indexed> by_index;
+    std::vector<Repeat> repeats;
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
+        by_index.clear();
+        std::size_t order = 0;
         scope.for_each_pdo([&](const Pdo& pdo) {
-            if (!has_index(pdo)) return;
-            const auto [it, inserted] = seen.emplace(pdo.index, &pdo);
-            if (!inserted) f(scope, pdo, *it->second);
+            if (has_index(pdo)) by_index.push_back(Indexed{pdo.index, order, &pdo});
+            ++order;
         });
+        std::sort(by_index.begin(), by_index.end(),
+                  [](const Indexed& a, const Indexed& b) { return a.index < b.index || (a.index == b.index && a.order < b.order); });
+        repeats.clear();
+        std::size_t first = 0;  // of the run of equal indices
+        for (std::size_t i = 1; i < by_index.size(); ++i) {
+            if (by_index[i].index != by_index[first].index) first = i;
+            else repeats.push_back(Repeat{by_index[i].order, by_index[i].pdo, by_index[first].pdo});
+        }
+        std::sort(repeats.begin(), repeats.end(), [](const Repeat& a, const Repeat& b) { return a.order < b.order; });
+        for (const Repeat& r : repeats) f(scope, *r.pdo, *r.first);
     }
 }
 
@@ -259,7 +285,7 @@ void report_repeated_index(RuleContext& context, const PdoScope& scope, const Pd
 }
 
 void check_duplicate_index(const EsiDocument& document, RuleContext& context) {
-    for_each_repeated_index(document, [&](const PdoScope& scope, const Pdo& pdo, const Pdo& first) {
+    for_each_repeated_index(document, context, [&](const PdoScope& scope, const Pdo& pdo, const Pdo& first) {
         if (index_names_one_mapping_object(scope, pdo, first)) report_repeated_index(context, scope, pdo, first, "");
     });
 }
@@ -280,7 +306,7 @@ constexpr Rule pdo_duplicate_index{
 };
 
 void check_duplicate_label(const EsiDocument& document, RuleContext& context) {
-    for_each_repeated_index(document, [&](const PdoScope& scope, const Pdo& pdo, const Pdo& first) {
+    for_each_repeated_index(document, context, [&](const PdoScope& scope, const Pdo& pdo, const Pdo& first) {
         if (!index_names_one_mapping_object(scope, pdo, first))
             report_repeated_index(context, scope, pdo, first, "; no index is written to the device, but Exclude and OpMode "
                                                               "references to it are ambiguous");
@@ -307,14 +333,16 @@ constexpr Rule pdo_duplicate_label{
 // ---- pdo-exclude-unknown --------------------------------------------------------------------
 
 void check_exclude_unknown(const EsiDocument& document, RuleContext& context) {
-    for (const auto& scope : pdo_scopes(document)) {
-        // Drives list every other PDO as excluded (Beckhoff AX2xxx): look indices up in a set.
-        std::unordered_set<std::uint32_t> indices;
-        scope.for_each_pdo([&](const Pdo& pdo) { indices.insert(pdo.index); });
+    std::vector<std::uint32_t> indices;  // of the PDOs of one owner
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
+        // Drives list every other PDO as excluded (Beckhoff AX2xxx): look indices up in a sorted list.
+        indices.clear();
+        scope.for_each_pdo([&](const Pdo& pdo) { indices.push_back(pdo.index); });
+        std::sort(indices.begin(), indices.end());
         scope.for_each_pdo([&](const Pdo& pdo) {
             for (const auto& exclude : pdo.excludes) {
                 if (exclude.depend_on_slot.value_or(false) || exclude.depend_on_slot_group.value_or(false)) continue;
-                if (indices.count(exclude.index)) continue;
+                if (std::binary_search(indices.begin(), indices.end(), exclude.index)) continue;
                 context.report(exclude.pos, pdo_name(pdo) + " excludes " + object_address(exclude.index) + ", which is not a PDO of this " +
                                                 (scope.device ? "device" : "module"));
             }
@@ -348,7 +376,7 @@ const XmlAttribute* legacy_ref(const Pdo& pdo) {
 void check_legacy_ref(const EsiDocument& document, RuleContext& context) {
     const Pdo* first = nullptr;
     std::size_t count = 0;
-    for (const auto& scope : pdo_scopes(document))
+    for (const auto& scope : context.cache().pdo_scopes(document))
         scope.for_each_pdo([&](const Pdo& pdo) {
             if (!legacy_ref(pdo)) return;
             if (!first) first = &pdo;
@@ -386,7 +414,7 @@ void check_mapping_limits(const EsiDocument& document, RuleContext& context) {
     // sub-entries in the 8-bit sub-index 0, and a mapping entry keeps the length in 8 bits.
     constexpr std::size_t max_subentries = 255;
     constexpr std::uint32_t max_bit_len = 255;
-    for (const auto& scope : pdo_scopes(document)) {
+    for (const auto& scope : context.cache().pdo_scopes(document)) {
         for (const auto* list : {scope.rx_pdos, scope.tx_pdos}) {
             if (list->size() > max_subentries) {
                 const Pdo& first_excess = (*list)[max_subentries];

@@ -53,7 +53,7 @@ std::string_view typical_control_byte(SmRole role) {
 // ---- sm-direction-mismatch ------------------------------------------------------------------
 
 void check_direction(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
             const SyncManager& sm = device->sms[n];
             const SmRole role = text_sm_role(sm);
@@ -88,7 +88,7 @@ constexpr Rule sm_direction_mismatch{
 // ---- sm-mailbox-mode ------------------------------------------------------------------------
 
 void check_mailbox_mode(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
             const SyncManager& sm = device->sms[n];
             const SmRole role = role_from_text(sm.type);
@@ -120,7 +120,7 @@ constexpr Rule sm_mailbox_mode{
 // ---- sm-control-byte-reserved ---------------------------------------------------------------
 
 void check_control_byte_reserved(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
             const SyncManager& sm = device->sms[n];
             if (!sm.control_byte) continue;
@@ -156,7 +156,7 @@ constexpr Rule sm_control_byte_reserved{
 // ---- sm-mailbox-position --------------------------------------------------------------------
 
 void check_mailbox_position(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
             const SyncManager& sm = device->sms[n];
             const SmRole role = device_sm_role(*device, sm);
@@ -206,7 +206,7 @@ std::string describe_range(const Device& device, const SmRange& r) {
 }
 
 void check_overlap(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         std::vector<SmRange> ranges;
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
             const SyncManager& sm = device->sms[n];
@@ -257,7 +257,7 @@ constexpr Rule sm_overlap{
 // ---- sm-size-zero ---------------------------------------------------------------------------
 
 void check_size_zero(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         // Slot devices get their PDOs (and so their SM sizes) from the plugged modules.
         if (device->slots) continue;
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
@@ -290,7 +290,7 @@ constexpr Rule sm_size_zero{
 // ---- sm-default-size-pdo --------------------------------------------------------------------
 
 void check_default_size_pdo(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         // Slot devices get their PDOs (and so their SM sizes) from the plugged modules.
         if (device->slots) continue;
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
@@ -333,7 +333,7 @@ constexpr Rule sm_default_size_pdo{
 // ---- sm-size-range --------------------------------------------------------------------------
 
 void check_size_range(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
             const SyncManager& sm = device->sms[n];
             const auto& lo = sm.min_size;
@@ -380,7 +380,7 @@ constexpr Rule sm_size_range{
 constexpr std::uint32_t minimum_mailbox_size = 16;
 
 void check_mailbox_size(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         for (std::size_t n = 0; n < device->sms.size(); ++n) {
             const SyncManager& sm = device->sms[n];
             if (!role_is_mailbox(device_sm_role(*device, sm))) continue;
@@ -440,7 +440,7 @@ std::string_view communication_type_name(std::uint64_t type) {
 }
 
 void check_1c00(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         const Dictionary* dictionary = device->dictionary();
         if (!dictionary) continue;
         const Object* object = dictionary->find_object(0x1C00);

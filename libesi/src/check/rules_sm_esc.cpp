@@ -6,6 +6,7 @@
 #include <string>
 
 #include "check/areas.hpp"
+#include "check/rule_cache.hpp"
 #include "check/esc_controller.hpp"
 #include "check/sm_memory.hpp"
 #include "check/sm_roles.hpp"
@@ -69,18 +70,18 @@ void check_sms(const Device& device, std::uint64_t end_of_ram, const std::string
         const SmRole role = device_sm_role(device, sm);
         const std::uint64_t buffers = occupies_three_buffers(device, sm, size) ? 3 : 1;
         const std::uint64_t end = start + size * buffers;
-        const std::string range = hex4(start) + (end - start > 1 ? ".." + hex4(end - 1) : "");
+        const auto range = [&] { return hex4(start) + (end - start > 1 ? ".." + hex4(end - 1) : ""); };  // for a message
         if (start < process_memory_start && is_mailbox(role)) {
-            context.report(sm.pos, sm_label(sm, n) + " is a mailbox at " + range +
+            context.report(sm.pos, sm_label(sm, n) + " is a mailbox at " + range() +
                                        ", inside the ESC's register area (below 0x1000); a mailbox lives in process "
                                        "RAM, and the master's mailbox writes would overwrite ESC registers");
         } else if (start < process_memory_start && size > 0 && !inside_data_registers(start, end)) {
-            context.report(sm.pos, sm_label(sm, n) + " lies at " + range +
+            context.report(sm.pos, sm_label(sm, n) + " lies at " + range() +
                                        ", on the ESC's control registers (below 0x1000, outside the distributed-clock "
                                        "registers 0x0900-0x09FF and the digital I/O registers 0x0F00-0x0FFF); process "
                                        "data belongs in process RAM from 0x1000");
         } else if (start >= process_memory_start && end > end_of_ram) {
-            context.report(sm.pos, sm_label(sm, n) + " occupies " + range + (buffers == 3 ? " (3 buffers)" : "") +
+            context.report(sm.pos, sm_label(sm, n) + " occupies " + range() + (buffers == 3 ? " (3 buffers)" : "") +
                                        ", past the end of the ESC's process RAM (" + because + ")");
         }
     }
@@ -99,19 +100,19 @@ void check_boot_strap(const Device& device, std::uint64_t end_of_ram, const std:
         const std::uint64_t start = word(2 * m);
         const std::uint64_t size = word(2 * m + 1);
         if (size == 0) continue;  // no boot mailbox in this direction
-        const std::string range = hex4(start) + ".." + hex4(start + size - 1);
+        const auto range = [&] { return hex4(start) + ".." + hex4(start + size - 1); };  // for a message
         if (start < process_memory_start)
-            context.report(boot.pos, std::string("BootStrap: the boot mailbox ") + names[m] + " at " + range +
+            context.report(boot.pos, std::string("BootStrap: the boot mailbox ") + names[m] + " at " + range() +
                                          " lies inside the ESC's register area (below 0x1000); SII words 0x14-0x17 "
                                          "give the master the SM0/SM1 addresses for BOOT");
         else if (start + size > end_of_ram)
-            context.report(boot.pos, std::string("BootStrap: the boot mailbox ") + names[m] + " at " + range +
+            context.report(boot.pos, std::string("BootStrap: the boot mailbox ") + names[m] + " at " + range() +
                                          " runs past the end of the ESC's process RAM (" + because + ")");
     }
 }
 
 void check_address_area(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document)) {
+    for (const Device* device : context.cache().devices(document)) {
         std::string because;
         const std::uint64_t end_of_ram = ram_end(*device, because);
         check_sms(*device, end_of_ram, because, context);
@@ -143,7 +144,7 @@ constexpr Rule sm_address_area{
 // ---- sm-count ---------------------------------------------------------------------------------
 
 void check_sm_count(const EsiDocument& document, RuleContext& context) {
-    for (const Device* device : all_devices(document))
+    for (const Device* device : context.cache().devices(document))
         report_blocks_past_limit(*device, device->sms, "SmCount", "SyncManagers", "SM", context);
 }
 

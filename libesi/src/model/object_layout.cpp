@@ -1,6 +1,7 @@
 #include "esi/model/object_layout.hpp"
 
 #include <algorithm>
+#include <charconv>
 
 namespace esi {
 
@@ -29,6 +30,14 @@ struct IndexedTypes {
     const DataTypeIndex& index;
     [[nodiscard]] const DataType* find(std::string_view name) const { return index.find(name); }
 };
+
+// Whether parse_type_name reads more than a plain name into `name`, which is not spelled as a
+// basic type: only STRING(n), ARRAY [..] OF and a basic type's name among blanks are more. Record
+// and enum DataTypes (DT1018) are none of these, and skip the parse and its copies of the name.
+bool parse_may_tell_more(std::string_view name) {
+    const std::string_view s = trim(name);
+    return s.size() != name.size() || s.starts_with("STRING") || s.starts_with("ARRAY");
+}
 
 template <class Types>
 ResolvedType resolve(const Types& types, std::string_view type_name) {
@@ -68,6 +77,7 @@ ResolvedType resolve(const Types& types, std::string_view type_name) {
                 out.basic = basic;
                 return out;
             }
+            if (!parse_may_tell_more(current)) return out;
             const TypeName parsed = parse_type_name(current);
             if (parsed.kind == TypeName::Kind::basic) out.basic = parsed.basic;
             else if (parsed.kind == TypeName::Kind::string) out.basic = parsed.basic;
@@ -143,12 +153,17 @@ const ObjectEntry* ObjectLayout::entry(std::uint32_t subindex) const {
 
 namespace {
 
-// "SubIndex 001" (three digits at least), the name of an array element. Formatted by hand:
-// snprintf cost some 500 instructions per element, and dictionaries have thousands.
+// "SubIndex 001" (three digits at least), the name of an array element. Formatted in a buffer on
+// the stack and copied into the string once (the name fits its inline storage): dictionaries have
+// thousands of array elements.
 std::string subindex_name(std::uint32_t subindex) {
-    std::string digits = std::to_string(subindex);
-    if (digits.size() < 3) digits.insert(0, 3 - digits.size(), '0');
-    return "SubIndex " + digits;
+    constexpr std::size_t prefix = 9;  // "SubIndex "
+    char text[prefix + 10] = "SubIndex 000";  // zero padding for numbers of fewer than three digits
+    char digits[10];
+    const auto count = static_cast<std::size_t>(std::to_chars(digits, digits + sizeof digits, subindex).ptr - digits);
+    const std::size_t width = std::max<std::size_t>(count, 3);
+    std::copy(digits, digits + count, text + prefix + width - count);
+    return std::string(text, prefix + width);
 }
 
 // Adds the elements of an array-typed item starting at `offset`.
@@ -187,8 +202,13 @@ ObjectLayout build_layout(const Types& types, const Object& object) {
         bool has_array_item = false;
         std::uint32_t next_subindex = 0;
         layout.entries.reserve(type.definition->sub_items.size());  // array items reserve their elements
+        // Runs of SubItems share a type (the UDINT entries of a PDO mapping, the BOOLs of a status
+        // record): the type is resolved once per run, not once per SubItem.
+        ResolvedType item_type;
+        const std::string* item_type_name = nullptr;
         for (const auto& item : type.definition->sub_items) {
-            const ResolvedType item_type = resolve(types, item.type);
+            if (!item_type_name || item.type != *item_type_name) item_type = resolve(types, item.type);
+            item_type_name = &item.type;
             const ObjectFlags* flags = item.flags ? &*item.flags : object_flags;
             if (item_type.is_array && !item.subindex) {
                 has_array_item = true;
