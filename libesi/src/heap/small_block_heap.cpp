@@ -57,6 +57,7 @@ std::atomic<std::size_t> reserved{0};
 std::size_t page_limit = 0;
 std::atomic<std::size_t> pages_taken{0};
 unsigned char page_class[max_pages];  // the size class of each page taken
+static_assert(class_count <= 256, "a page's class is one byte");
 std::once_flag reservation_made;
 
 // Blocks of threads that ended, by class, for the next thread that needs a page.
@@ -82,20 +83,13 @@ void reserve() {
     reserved.store(size, std::memory_order_release);
 }
 
-// Carves what is left of the pages this thread carves from into its free lists and hands every
-// list to the orphans. Runs when the thread ends.
+// Hands every list of the thread to the orphans. Runs when the thread ends. What is left of the
+// pages it was carving stays unused: it was never touched, so it takes no memory.
 void hand_over(void*) {
     ThreadCache& c = cache;
-    for (std::size_t k = 0; k < class_count; ++k) {
-        for (char* p = c.carve[k]; p && p != c.carve_end[k]; p += block_size(k)) {
-            auto* b = reinterpret_cast<FreeBlock*>(p);
-            b->next = c.free[k];
-            c.free[k] = b;
-        }
-        c.carve[k] = c.carve_end[k] = nullptr;
-    }
     const std::lock_guard lock(orphan_mutex);
     for (std::size_t k = 0; k < class_count; ++k) {
+        c.carve[k] = c.carve_end[k] = nullptr;
         FreeBlock* list = c.free[k];
         if (!list) continue;
         FreeBlock* last = list;
