@@ -51,6 +51,28 @@ TEST(XInclude, ElementsOfTheXIncludeNamespaceAreErrorsAtTheirPosition) {
     }
 }
 
+// The namespace declared on the root or on an ancestor (the reader watches declarations as the
+// parser reads them, and every start tag after the first).
+TEST(XInclude, ADeclarationOnTheRootOrAnAncestorCoversTheElementsBelow) {
+    const std::string sample = esi::test::sample_esi();
+    const auto root_at = sample.find("<EtherCATInfo");
+    ASSERT_NE(root_at, std::string::npos);
+    std::string on_root = sample;
+    on_root.insert(root_at + std::string("<EtherCATInfo").size(), " xmlns:xi=\"http://www.w3.org/2001/XInclude\"");
+    on_root = esi::test::replace_once(on_root, anchor, std::string(anchor) + "\n        <xi:include href=\"a.xml\"/>");
+    const esi::ReadResult from_root = esi::read_esi(on_root, "device.xml");
+    ASSERT_EQ(xinclude_errors(from_root).size(), 1u);
+    EXPECT_EQ(xinclude_errors(from_root)[0]->pos.line, esi::test::line_of(on_root, anchor) + 1);
+
+    const std::string on_ancestor = esi::test::replace_once(
+        sample, anchor, "<Device Physics=\"YY\" xmlns:x=\"http://www.w3.org/2003/XInclude\">\n        <Info><x:include/></Info>");
+    EXPECT_EQ(xinclude_errors(esi::read_esi(on_ancestor, "device.xml")).size(), 1u);
+
+    // An element before the declaration, or beside the element that declares it, is not in it.
+    const std::string before = with_element("<xi:include/><Info xmlns:xi=\"http://www.w3.org/2001/XInclude\"/><xi:include/>");
+    EXPECT_TRUE(xinclude_errors(esi::read_esi(before, "device.xml")).empty());
+}
+
 TEST(XInclude, OtherElementsNamedIncludeAreNotXInclude) {
     for (const std::string element : {"<my:include xmlns:my=\"urn:vendor\"/>", "<include href=\"x\"/>",
                                       "<xi:include xmlns:xi=\"urn:vendor-include\"/>", "<xi:include href=\"x\"/>"}) {

@@ -300,18 +300,18 @@ ReadResult read_decoded(Decoded decoded, const std::string& path, const ReadOpti
     Diagnostics read;
     EsiDocument doc;
     if (const xml_tree::Element root = parser.root()) {
-        // XInclude elements are looked for at every start tag where the text may hold them (most
-        // files have none); undeclared namespace prefixes at the start tags with a prefixed name.
-        std::optional<XIncludeCheck> xinclude_check;
-        if (may_hold_xinclude(source->text())) xinclude_check.emplace(*source, xinclude);
+        // Undeclared namespace prefixes are looked for at the start tags with a prefixed name;
+        // XInclude elements at every start tag once the namespace is declared (most files never
+        // declare it).
         UndeclaredPrefixCheck prefix_check(*source, parser, root, prefixes);
-        if (xinclude_check) xinclude_check->start_tag(root);
         if (parser.last_tag_prefixed()) prefix_check.start_tag(root);
-        parser.observe(xinclude_check ? &*xinclude_check : nullptr, &prefix_check);
+        parser.observe(nullptr, &prefix_check);
+        const XIncludeCheck xinclude_check(*source, parser, root, xinclude);
         Reader reader(*source, parser, read, options);
         doc = reader.read_document(root);
         parser.finish();
         parser.observe(nullptr, nullptr);
+        parser.observe_namespaces(nullptr);
     }
     if (const auto& fault = parser.fault()) {
         result.diagnostics.emplace(Severity::error, "xml-syntax", "not well-formed: " + fault->message, path,

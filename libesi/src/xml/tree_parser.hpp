@@ -38,6 +38,15 @@ public:
     virtual void start_tag(Element element) = 0;
 };
 
+// Told about every namespace declaration (an attribute named xmlns or xmlns:prefix) with its
+// value, while the start tag holding it is read: before the observers of start tags are told
+// about that tag.
+class NamespaceObserver {
+public:
+    virtual ~NamespaceObserver() = default;
+    virtual void declared(std::string_view uri) = 0;
+};
+
 // The base-from-member idiom: the Checker the Scanner refers to exists before the Scanner.
 struct CheckerHolder {
     CheckerHolder(std::string_view text, SourceEncoding encoding) : checker(text, encoding) {}
@@ -110,6 +119,8 @@ public:
         observer_ = every;
         prefix_observer_ = prefixed;
     }
+    void observe_namespaces(NamespaceObserver* observer) { namespace_observer_ = observer; }
+    [[nodiscard]] StartTagObserver* prefix_observer() const { return prefix_observer_; }
     // Whether the last start tag read had a prefixed name.
     [[nodiscard]] bool last_tag_prefixed() const { return tag_prefixed_; }
     // The position of a byte of the start tag just read (for the observers' diagnostics).
@@ -220,6 +231,7 @@ private:
     std::vector<Open> building_;  // the elements expand() has open, innermost last
     StartTagObserver* observer_ = nullptr;
     StartTagObserver* prefix_observer_ = nullptr;
+    NamespaceObserver* namespace_observer_ = nullptr;
     const SourceText* releasable_ = nullptr;
     std::size_t released_ = 0;
     bool tag_prefixed_ = false;  // the start tag being read has a prefixed element or attribute name

@@ -74,6 +74,20 @@ std::string describe_xinclude(const pugi::xml_node element) {
 
 // ---- the reader's check, on its element tree ------------------------------------------------
 
+XIncludeCheck::XIncludeCheck(const SourceText& source, xml_tree::TreeParser& parser, xml_tree::Element root, Diagnostics& diagnostics)
+    : source_(source), parser_(parser), diagnostics_(diagnostics) {
+    parser_.observe_namespaces(this);
+    for (const xml_tree::Attribute& a : root.attributes())
+        if (a.name.starts_with("xmlns") && (a.name.size() == 5 || a.name[5] == ':')) declared(a.value);
+    if (watching_) start_tag(root);
+}
+
+void XIncludeCheck::declared(std::string_view uri) {
+    if (watching_ || !is_xinclude_namespace(uri)) return;
+    watching_ = true;
+    parser_.observe(this, parser_.prefix_observer());
+}
+
 void XIncludeCheck::start_tag(xml_tree::Element element) {
     const bool xinclude = in_xinclude_namespace(element.name(), [&](const std::string& declaration) -> std::optional<std::string_view> {
         for (xml_tree::Element n = element; n; n = n.parent())

@@ -1,7 +1,8 @@
 #pragma once
 // The ESI reader's xml-xinclude check (esi/xml/xinclude.hpp says why XInclude is refused): every
-// start tag of the document, while the parser's pass is at it, when the text may hold an XInclude
-// element at all (may_hold_xinclude).
+// start tag of the document from the first that declares the XInclude namespace on (most files
+// declare it nowhere, and no element before a declaration can be in it), while the parser's pass
+// is at it.
 
 #include "esi/diagnostic.hpp"
 #include "esi/source_text.hpp"
@@ -10,15 +11,21 @@
 
 namespace esi {
 
-class XIncludeCheck final : public xml_tree::StartTagObserver {
+class XIncludeCheck final : public xml_tree::StartTagObserver, public xml_tree::NamespaceObserver {
 public:
-    XIncludeCheck(const SourceText& source, Diagnostics& diagnostics) : source_(source), diagnostics_(diagnostics) {}
+    // Watches the namespace declarations `parser` reads from now on, and those of `root`, the
+    // start tag it has read; checks the root.
+    XIncludeCheck(const SourceText& source, xml_tree::TreeParser& parser, xml_tree::Element root, Diagnostics& diagnostics);
     // An xml-xinclude error for an element in the XInclude namespace (an ancestor declares it).
     void start_tag(xml_tree::Element element) override;
+    // At the XInclude namespace, asks the parser for every start tag from this one on.
+    void declared(std::string_view uri) override;
 
 private:
     const SourceText& source_;
+    xml_tree::TreeParser& parser_;
     Diagnostics& diagnostics_;
+    bool watching_ = false;
 };
 
 }  // namespace esi
