@@ -162,8 +162,46 @@ TEST(ElementTree, EdgeCasesReadAsPugixmlReadsThem) {
          }()},
         {"prolog and trailer", "<?xml version=\"1.0\"?>\n<!-- x -->\n<?pi?>\n<a>\n</a>\n<!-- y -->\n<?z?>\n\n"},
         {"']' and '>' in text", "<a>]] ] > ]]&gt; a]b</a>"},
+        // Attributes of inner tags, most of which the inner loop reads itself.
+        {"attributes of inner tags", "<r>\n <a x=\"1\" y-z.9='two'>v</a>\n <b k=\"\"/><c  k=\"x\"  /><d k=\"1\" >t</d>"
+                                     "<e k=\"a>b\" l='\"q\"' m=\"\xC3\xA9\xE2\x82\xAC\"/><f k=\"&amp;\" l=\"a\tb\"><g/></f>"
+                                     "<h xml:lang=\"de\" k=\"1\"/><i k=\"1\" xmlns=\"urn:x\"/><j _k=\"1\"/></r>"},
+        {"up to and beyond eight attributes of an inner tag", [] {
+             std::string s = "<r>";
+             for (int n = 7; n <= 10; ++n) {
+                 s += "<a";
+                 for (int i = 0; i < n; ++i) s += " a" + std::to_string(i) + "=\"" + std::to_string(i) + "\"";
+                 s += ">x</a>";
+             }
+             return s + "</r>";
+         }()},
     };
     for (const auto& [name, xml] : cases) compare_with_pugixml(xml, name);
+}
+
+// An inner start tag's attributes fault as the root's do, whether or not the inner loop reads
+// them itself.
+TEST(ElementTree, FaultsInTheAttributesOfInnerTags) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"<r>\n<a x=\"1\" x=\"2\"/></r>", "attribute 'x' is given twice in the start tag of 'a'"},
+        {"<r>\n<a x=\"1\"y=\"2\"/></r>", "whitespace expected before an attribute of 'a'"},
+        {"<r>\n<a x=\"1</a></r>", "'<' inside the value of attribute 'x' (write &lt;)"},
+        {"<r>\n<a x=1/></r>", "the value of attribute 'x' must be quoted"},
+        {"<r>\n<a x=\"&bogus;\"/></r>", ""},
+    };
+    for (const auto& [text, message] : cases) {
+        SCOPED_TRACE(text);
+        esi::xml_tree::Tree tree;
+        esi::xml_tree::TreeParser parser(text, esi::SourceEncoding::utf8, tree);
+        const Element root = parser.root();
+        ASSERT_TRUE(root);
+        EXPECT_FALSE(parser.expand(root));
+        ASSERT_TRUE(parser.fault());
+        if (!message.empty()) {
+            EXPECT_EQ(parser.fault()->message, message);
+        }
+        EXPECT_EQ(parser.position_of(text.data() + parser.fault()->offset).line, 2u);
+    }
 }
 
 TEST(ElementTree, CorpusFilesReadAsPugixmlReadsThem) {

@@ -573,6 +573,55 @@ bool TreeParser::other_markup(std::uint32_t owner, std::uint32_t* last_child) {
 #endif
 }
 
+// The attributes of a start tag from q, the byte after its name, to its '>' or "/>", when they
+// are written as nearly all attributes of ESI files are: spaces before each, an ASCII name
+// without a prefix, '=' and a quoted value with nothing in it to decode or look at closely, at
+// most max_plain_attributes of them, none given twice. False for anything else (nothing is
+// then kept, and start_tag() reads the tag): its checks and reports stay in one place. A
+// namespace declaration is left to start_tag() while someone listens for them.
+bool TreeParser::plain_attributes(const char* q, PlainAttributes& out) const {
+    for (;;) {
+        if (*q != ' ') return false;
+        do ++q;
+        while (*q == ' ');
+        if ((class_of(*q) & (name_start | non_ascii)) != name_start || *q == ':') {
+            if (*q == '>' && out.count > 0) {  // white space before the end of the tag
+                out.after = q + 1;
+                return true;
+            }
+            if (*q == '/' && q[1] == '>' && out.count > 0) {
+                out.empty = true;
+                out.after = q + 2;
+                return true;
+            }
+            return false;
+        }
+        const char* name_at = q;
+        while (name_chars[static_cast<Byte>(*q)]) ++q;  // the text ends with a NUL, which ends this
+        const std::string_view name(name_at, static_cast<std::size_t>(q - name_at));
+        if (q[0] != '=' || (q[1] != '"' && q[1] != '\'')) return false;
+        if (namespace_observer_ && name.starts_with("xmlns")) return false;
+        if (out.count == max_plain_attributes) return false;
+        for (unsigned i = 0; i < out.count; ++i)
+            if (out.items[i].name == name) return false;  // given twice: start_tag() says so
+        const char quote = q[1];
+        const char* value_at = q + 2;
+        q = scan::value_stop(value_at, end_, quote);
+        if (q == end_ || *q != quote) return false;
+        out.items[out.count++] = {name, std::string_view(value_at, static_cast<std::size_t>(q - value_at))};
+        ++q;
+        if (*q == '>') {
+            out.after = q + 1;
+            return true;
+        }
+        if (*q == '/' && q[1] == '>') {
+            out.empty = true;
+            out.after = q + 2;
+            return true;
+        }
+    }
+}
+
 // The inner loop of the parse: an element's content, its children's and theirs, built into the
 // tree. The steps nearly every element of a file takes (a run of white space or a short value, a
 // start tag without attributes, an end tag) are inline here, on a local cursor; everything else is
@@ -657,6 +706,26 @@ bool TreeParser::expand(Element element) {
             // A leaf, "<Name>value</Name>" as most elements of an ESI file are, is read to its end
             // tag right here and never goes on the stack.
             if (p < roomy && leaf(p, child, name)) {
+                append_child(parent, &top->last_child, child);
+                if (observer_) {
+                    p_ = p;
+                    tell_observers(child, false);
+                }
+                continue;
+            }
+        } else if (PlainAttributes plain; *q == ' ' && plain_attributes(q, plain)) {
+            const SourcePos pos = line_start_ > text ? SourcePos{line_starts_.count(), static_cast<std::uint32_t>(p - line_start_) + 1}
+                                                     : position_at(p);
+            const std::string_view name(p + 1, static_cast<std::size_t>(q - p - 1));
+            child = tree_.add_element(name, parent, static_cast<std::uint32_t>(p - begin_), pos);
+            std::vector<Attribute>& attributes = tree_.attributes();
+            attributes.insert(attributes.end(), plain.items, plain.items + plain.count);
+            tree_.node(child).attribute_count = plain.count;
+            tag_prefixed_ = false;
+            empty = plain.empty;
+            p = plain.after;
+            q = p - 1;  // at the '>': the tag was not read by start_tag()
+            if (!empty && p < roomy && leaf(p, child, name)) {
                 append_child(parent, &top->last_child, child);
                 if (observer_) {
                     p_ = p;

@@ -213,6 +213,15 @@ private:
     Run run_to_markup(const char* p);
     bool short_run(const char*& p, const char*& text, std::uint32_t owner, std::uint32_t* last_child);
     bool leaf(const char*& p, std::uint32_t element, std::string_view name);
+    // The attributes of a start tag as most are written: see plain_attributes() in the .cpp.
+    static constexpr unsigned max_plain_attributes = 8;
+    struct PlainAttributes {
+        Attribute items[max_plain_attributes];
+        unsigned count = 0;
+        const char* after = nullptr;  // the byte after the tag's '>'
+        bool empty = false;           // "/>"
+    };
+    bool plain_attributes(const char* q, PlainAttributes& out) const;
     // Markup other than a tag at p_: comments, processing instructions, CDATA sections (kept under
     // `owner` when there is one), and what is misplaced.
     bool other_markup(std::uint32_t owner, std::uint32_t* last_child);
