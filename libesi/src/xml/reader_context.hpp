@@ -176,8 +176,15 @@ private:
     }
     std::optional<Number> number(const Element n) { return number(pcdata(n), ValueSite{n}); }
 
+    // A plain number in range is the common case, and costs no optional<Number>.
     template <class T>
     std::optional<T> integer(std::string_view text, const ValueSite& site) {
+        std::uint64_t value = 0;
+        if (plain_number(text, value) && value <= static_cast<std::uint64_t>(std::numeric_limits<T>::max())) return static_cast<T>(value);
+        return checked_integer<T>(text, site);
+    }
+    template <class T>
+    [[gnu::noinline]] std::optional<T> checked_integer(std::string_view text, const ValueSite& site) {
         const std::optional<Number> n = number(text, site);
         if (!n) return std::nullopt;
         if constexpr (std::is_signed_v<T>) {
