@@ -1,6 +1,9 @@
 // esi-lint throughput on the real corpus, side by side with bare pugixml parsing:
 //   1. bare pugixml parse (MB/s), 2. read into the model, 3. read + all rules on one thread,
-//   4. wall time of `esi-lint -j <cores>` over the whole corpus and its peak memory.
+//   4. wall time of `esi-lint -j <cores>` over the whole corpus and its peak memory,
+//   5. issue 25's target pair as processes: `esi-lint -j1 --format json` over the corpus files
+//      against `lint_stage bare` over the same files, run in turn, CPU time (user + system) of
+//      each from wait4, and the ratio of the medians.
 // Each figure is the median of several runs. Usage: lint_corpus [CORPUS_DIR] [RUNS]
 
 #include <pugixml.hpp>
@@ -62,8 +65,14 @@ Timing time_runs(int runs, const std::function<void()>& f) {
     return {median(walls), median(cpus)};
 }
 
-// Runs a command, returns {wall seconds, peak RSS in MB}.
-std::pair<double, double> run_measured(std::vector<std::string> argv) {
+struct ChildRun {
+    double wall = -1;  // seconds
+    double cpu = -1;   // user + system seconds
+    double peak = -1;  // max RSS, MB
+};
+
+// Runs a command with its output to /dev/null.
+ChildRun run_measured(std::vector<std::string> argv) {
     std::vector<char*> args;
     for (auto& a : argv) args.push_back(a.data());
     args.push_back(nullptr);
@@ -72,13 +81,14 @@ std::pair<double, double> run_measured(std::vector<std::string> argv) {
     posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", 0x1 /*O_WRONLY*/, 0);
     const auto t0 = std::chrono::steady_clock::now();
     pid_t pid = 0;
-    if (posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ) != 0) return {-1, -1};
+    if (posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ) != 0) return {};
     int status = 0;
     rusage usage{};
     wait4(pid, &status, 0, &usage);
     posix_spawn_file_actions_destroy(&actions);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return {wall, static_cast<double>(usage.ru_maxrss) / 1024.0};
+    const auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
+    return {wall, seconds(usage.ru_utime) + seconds(usage.ru_stime), static_cast<double>(usage.ru_maxrss) / 1024.0};
 }
 
 }  // namespace
@@ -94,17 +104,19 @@ int main(int argc, char** argv) {
     // Linux carries that address space's high-water mark into the child's max RSS at exec. Run
     // after the corpus and its models were loaded, the figure was this process's (about 65 MB),
     // not esi-lint's.
-    const std::filesystem::path esi_lint = std::filesystem::path(argv[0]).parent_path().parent_path() / "cli" / "esi-lint";
+    const std::filesystem::path build = std::filesystem::path(argv[0]).parent_path().parent_path();
+    const std::filesystem::path esi_lint = build / "cli" / "esi-lint";
+    const std::filesystem::path lint_stage = build / "bench" / "lint_stage";
     double lint_wall = -1;
     double lint_peak = 0;
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     if (std::filesystem::exists(esi_lint)) {
         std::vector<double> walls;
         for (int i = 0; i < runs; ++i) {
-            const auto [wall, rss] = run_measured({esi_lint.string(), "-j", std::to_string(cores), "--format", "json",
-                                                   "--fail-on", "never", dir.string()});
-            walls.push_back(wall);
-            lint_peak = std::max(lint_peak, rss);
+            const ChildRun run = run_measured({esi_lint.string(), "-j", std::to_string(cores), "--format", "json", "--fail-on", "never",
+                                               dir.string()});
+            walls.push_back(run.wall);
+            lint_peak = std::max(lint_peak, run.peak);
         }
         lint_wall = median(walls);
     }
@@ -151,6 +163,29 @@ int main(int argc, char** argv) {
         std::printf("%-44s %8.1f ms  (-j %u)\n", "esi-lint whole corpus, wall time", lint_wall * 1e3, cores);
         std::printf("%-44s %8.1f MB  (budget 4 x largest + 30 MB = %.1f MB)\n", "esi-lint peak memory (max RSS)", lint_peak,
                     4.0 * static_cast<double>(largest) / 1048576.0 + 30.0);
+    }
+
+    // Issue 25: the whole tool against the bare parse program, both as processes, in turn.
+    if (std::filesystem::exists(esi_lint) && std::filesystem::exists(lint_stage)) {
+        std::vector<std::string> lint_argv = {esi_lint.string(), "-j1", "--format", "json", "--fail-on", "never"};
+        std::vector<std::string> bare_argv = {lint_stage.string(), "bare"};
+        for (const auto& in : inputs) {
+            lint_argv.push_back(in.path.string());
+            bare_argv.push_back(in.path.string());
+        }
+        run_measured(lint_argv);  // warm the page cache and the binaries
+        run_measured(bare_argv);
+        std::vector<double> lint_cpu;
+        std::vector<double> bare_cpu;
+        for (int i = 0; i < runs; ++i) {
+            lint_cpu.push_back(run_measured(lint_argv).cpu);
+            bare_cpu.push_back(run_measured(bare_argv).cpu);
+        }
+        const double l = median(lint_cpu);
+        const double b = median(bare_cpu);
+        std::printf("%-44s %8.1f ms CPU\n", "esi-lint -j1 --format json (process)", l * 1e3);
+        std::printf("%-44s %8.1f ms CPU\n", "lint_stage bare (process)", b * 1e3);
+        std::printf("%-44s %8.2f  (issue 25 target: 1.5)\n", "esi-lint / bare parse, CPU time", l / b);
     }
     return 0;
 }
