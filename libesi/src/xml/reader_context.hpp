@@ -306,10 +306,11 @@ private:
     // Reserves room for the children named `name` about to be read into `items`: large model
     // elements (an Object is about 1 KB) are then neither moved while the vector grows nor
     // left with up to half of its capacity unused.
-    template <class T>
-    static void reserve_for(std::vector<T>& items, const Element n, std::string_view name) {
+    // The name is a literal, compared inline (this walks every child of every Object/Info and PDO).
+    template <class T, std::size_t N>
+    static void reserve_for(std::vector<T>& items, const Element n, const char (&name)[N]) {
         std::size_t count = 0;
-        for (Element c = n.child(name); c; c = c.next_sibling(name)) ++count;
+        for (Element c = n.first_child(); c; c = c.next_sibling()) count += c.kind() == xml_tree::NodeKind::element && is(c.name(), name);
         items.reserve(items.size() + count);
     }
 
