@@ -127,8 +127,10 @@ public:
         return size_++;
     }
     // An element the parser read a start tag of, its fields written once (the parser's inner loop
-    // adds one for nearly every element of a file).
-    std::uint32_t add_element(std::string_view name, std::uint32_t parent, std::uint32_t offset, SourcePos pos) {
+    // adds one for nearly every element of a file). Its attributes, if any, are the ones added
+    // after it (first_attribute is then attributes().size(); without any it does not matter).
+    std::uint32_t add_element(std::string_view name, std::uint32_t parent, std::uint32_t offset, SourcePos pos,
+                              std::uint32_t first_attribute = 0) {
         if (size_ == capacity_) grow(2 * capacity_);
         Node& n = nodes_.get()[size_];
         n.name = name;
@@ -136,7 +138,7 @@ public:
         n.parent = parent;
         n.first_child = 0;
         n.next_sibling = 0;
-        n.first_attribute = static_cast<std::uint32_t>(attributes_.size());
+        n.first_attribute = first_attribute;
         n.attribute_count = 0;
         n.offset = offset;
         n.pos = pos;

@@ -717,8 +717,8 @@ bool TreeParser::expand(Element element) {
             const SourcePos pos = line_start_ > text ? SourcePos{line_starts_.count(), static_cast<std::uint32_t>(p - line_start_) + 1}
                                                      : position_at(p);
             const std::string_view name(p + 1, static_cast<std::size_t>(q - p - 1));
-            child = tree_.add_element(name, parent, static_cast<std::uint32_t>(p - begin_), pos);
             std::vector<Attribute>& attributes = tree_.attributes();
+            child = tree_.add_element(name, parent, static_cast<std::uint32_t>(p - begin_), pos, static_cast<std::uint32_t>(attributes.size()));
             attributes.insert(attributes.end(), plain.items, plain.items + plain.count);
             tree_.node(child).attribute_count = plain.count;
             tag_prefixed_ = false;
