@@ -14,7 +14,7 @@ namespace {
 
 TEST(ReadFile, TheBufferHoldsTheBytesFollowedByANul) {
     esi::test::TempDir dir;
-    for (const std::string& bytes : {std::string(), std::string("<a/>"), std::string(200000, 'x') + "\xEF\xBB\xBF"}) {
+    for (const std::string& bytes : {std::string(), std::string("<a/>"), std::string(200000, 'x') + "\xEF\xBB\xBF", std::string(700000, 'y')}) {
         const auto file = dir / "f.xml";
         esi::test::write_text(file, bytes);
         std::string error;

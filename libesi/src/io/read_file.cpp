@@ -19,13 +19,13 @@ namespace {
 // A buffer of `size` bytes (and a NUL after them) whose bytes are not initialised: they are read
 // into right after.
 struct Growing {
-    std::unique_ptr<char[]> data;
+    LargeBytes data;
     std::size_t size = 0;
     std::size_t capacity = 0;
 
     void reserve(std::size_t n) {
         if (data && n <= capacity) return;
-        std::unique_ptr<char[]> bigger(new char[n + 1]);
+        LargeBytes bigger = allocate_large_bytes(n + 1);
         if (size) std::memcpy(bigger.get(), data.get(), size);
         data = std::move(bigger);
         capacity = n;

@@ -25,8 +25,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
+#include "esi/large_buffer.hpp"
 #include "esi/source_pos.hpp"
 
 namespace esi::xml_tree {
@@ -37,6 +39,8 @@ struct Attribute {
     std::string_view name;
     std::string_view value;
 };
+// A document's attributes, in one array (a big file's is a large buffer, esi/large_buffer.hpp).
+using AttributeList = std::vector<Attribute, LargeBufferAllocator<Attribute>>;
 
 struct Node {
     std::string_view name;   // elements only
@@ -147,33 +151,39 @@ public:
         n.complete = false;
         return size_++;
     }
-    std::vector<Attribute>& attributes() { return attributes_; }
+    AttributeList& attributes() { return attributes_; }
     // Keeps a decoded value; the view stays valid until a truncate() before it.
     std::string_view keep(std::string&& decoded) { return decoded_.emplace_back(std::move(decoded)); }
     [[nodiscard]] std::size_t node_count() const { return size_ - 1; }
 
 private:
     // Raw storage: a node is written whole when it is added (Node is an aggregate, so its objects
-    // begin their lifetime in the allocated storage), and growing copies only the nodes in use.
+    // begin their lifetime in the allocated storage), and growing keeps only the nodes in use (a
+    // large buffer is lengthened in place, esi/large_buffer.hpp).
+    static_assert(std::is_trivially_copyable_v<Node>, "nodes are moved as bytes when the array grows");
     struct Release {
-        void operator()(Node* p) const { ::operator delete(p); }
+        Release() noexcept : bytes(0) {}
+        explicit Release(std::size_t capacity) noexcept : bytes(capacity * sizeof(Node)) {}
+        std::size_t bytes;
+        void operator()(Node* p) const { free_large_buffer(p, bytes); }
     };
     void grow(std::size_t capacity) {
-        std::unique_ptr<Node, Release> nodes(static_cast<Node*>(::operator new(capacity * sizeof(Node))));
+        const std::size_t old_bytes = nodes_.get_deleter().bytes;
+        Node* nodes = static_cast<Node*>(
+            reallocate_large_buffer(nodes_.get(), old_bytes, capacity * sizeof(Node), size_ * sizeof(Node)));
+        (void)nodes_.release();  // reallocated: `nodes` holds them now
+        nodes_ = std::unique_ptr<Node, Release>(nodes, Release(capacity));
         if (size_ == 0) {
-            nodes.get()[0] = Node{};  // the first, "none"
+            nodes[0] = Node{};  // the first, "none"
             size_ = 1;
-        } else {
-            std::copy(nodes_.get(), nodes_.get() + size_, nodes.get());
         }
-        nodes_ = std::move(nodes);
         capacity_ = static_cast<std::uint32_t>(capacity);
     }
 
     std::unique_ptr<Node, Release> nodes_;
     std::uint32_t size_ = 0;
     std::uint32_t capacity_ = 0;
-    std::vector<Attribute> attributes_;
+    AttributeList attributes_;
     std::deque<std::string> decoded_;  // a deque: growing it moves no string, so views stay valid
 };
 

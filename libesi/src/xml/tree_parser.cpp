@@ -277,7 +277,7 @@ bool TreeParser::attribute(std::uint32_t element, std::string_view element_name)
     std::string_view attribute_name;
     if (!name(attribute_name, "attribute")) return false;
     if (attribute_name.find(':') != std::string_view::npos) tag_prefixed_ = true;
-    std::vector<Attribute>& attributes = tree_.attributes();
+    AttributeList& attributes = tree_.attributes();
     const std::size_t first = tree_.node(element).first_attribute;
     const std::size_t count = attributes.size() - first;
     // A linear search for the usual few attributes, a set for many.
@@ -717,7 +717,7 @@ bool TreeParser::expand(Element element) {
             const SourcePos pos = line_start_ > text ? SourcePos{line_starts_.count(), static_cast<std::uint32_t>(p - line_start_) + 1}
                                                      : position_at(p);
             const std::string_view name(p + 1, static_cast<std::size_t>(q - p - 1));
-            std::vector<Attribute>& attributes = tree_.attributes();
+            AttributeList& attributes = tree_.attributes();
             child = tree_.add_element(name, parent, static_cast<std::uint32_t>(p - begin_), pos, static_cast<std::uint32_t>(attributes.size()));
             attributes.insert(attributes.end(), plain.items, plain.items + plain.count);
             tree_.node(child).attribute_count = plain.count;

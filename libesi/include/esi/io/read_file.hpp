@@ -9,6 +9,8 @@
 #include <string>
 #include <string_view>
 
+#include "esi/large_buffer.hpp"
+
 namespace esi {
 
 // The largest input file the front ends read (256 MiB; the largest vendor ESI file in the
@@ -25,7 +27,7 @@ inline constexpr std::uint64_t max_input_bytes = 256u << 20;
 class FileBytes {
 public:
     FileBytes() = default;
-    FileBytes(std::unique_ptr<char[]> data, std::size_t size) : data_(std::move(data)), size_(size) {}
+    FileBytes(LargeBytes data, std::size_t size) : data_(std::move(data)), size_(size) {}
     FileBytes(FileBytes&& other) noexcept;
     FileBytes& operator=(FileBytes&& other) noexcept;
     FileBytes(const FileBytes&) = delete;
@@ -44,7 +46,7 @@ public:
     void release(std::size_t from, std::size_t to) const;
 
 private:
-    std::unique_ptr<char[]> data_;
+    LargeBytes data_;
     char* map_ = nullptr;
     std::size_t map_length_ = 0;
     std::size_t size_ = 0;
