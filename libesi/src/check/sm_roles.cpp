@@ -14,9 +14,10 @@ bool has_default_pdo(const Device& device, const SyncManager& sm) {
 }  // namespace
 
 SmRole text_sm_role(const SyncManager& sm) {
-    if (sm.type == "DynamicOutputs") return SmRole::outputs;
-    if (sm.type == "DynamicInputs") return SmRole::inputs;
-    return role_from_text(sm.type);
+    const std::string_view type = sm.type;  // compared as a view: its length first
+    if (type == "DynamicOutputs") return SmRole::outputs;
+    if (type == "DynamicInputs") return SmRole::inputs;
+    return role_from_text(type);
 }
 
 SmRole device_sm_role(const Device& device, const SyncManager& sm) {

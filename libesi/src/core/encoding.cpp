@@ -131,6 +131,24 @@ DecodedText decode_utf16(std::string_view bytes, bool little_endian) {
 // The end of the run of ASCII bytes (high bit clear) starting at `from`.
 std::size_t ascii_run_end(std::string_view bytes, std::size_t from) {
     std::size_t i = from;
+#if defined(__SSE2__)
+    // 64 bytes a step (four blocks ORed, one test of their high bits), then the block that has
+    // the byte: an 8-bit file is nearly all ASCII, and eight bytes a step still cost half an
+    // instruction a byte.
+    const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
+    while (i + 64 <= bytes.size()) {
+        const auto* q = reinterpret_cast<const __m128i*>(p + i);
+        const __m128i any = _mm_or_si128(_mm_or_si128(_mm_loadu_si128(q), _mm_loadu_si128(q + 1)),
+                                         _mm_or_si128(_mm_loadu_si128(q + 2), _mm_loadu_si128(q + 3)));
+        if (_mm_movemask_epi8(any) != 0) break;
+        i += 64;
+    }
+    while (i + 16 <= bytes.size()) {
+        const int high = _mm_movemask_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p + i)));
+        if (high != 0) return i + static_cast<std::size_t>(__builtin_ctz(static_cast<unsigned>(high)));
+        i += 16;
+    }
+#endif
     while (i + 8 <= bytes.size()) {
         std::uint64_t chunk = 0;
         std::memcpy(&chunk, bytes.data() + i, 8);

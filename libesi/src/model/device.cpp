@@ -49,8 +49,11 @@ const Object* Dictionary::find_object(std::uint32_t index) const {
 }
 
 const DataType* Dictionary::find_data_type(std::string_view name) const {
+    // Names of one length are told apart by their last letter first (DT1600, DT1601, ...): most
+    // of those a lookup passes are then left without a call to compare the whole names.
+    const std::size_t n = name.size();
     for (const auto& t : data_types)
-        if (t.name == name) return &t;
+        if (t.name.size() == n && (n == 0 || t.name[n - 1] == name[n - 1]) && std::string_view(t.name) == name) return &t;
     return nullptr;
 }
 

@@ -26,8 +26,8 @@ namespace esi {
 namespace xml_reader {
 
 void Reader::verbatim(XmlElement& e, const Element n, std::string_view after, std::size_t depth) {
-    e.name = n.name();
-    e.after = after;
+    set(e.name, n.name());
+    set(e.after, after);
     e.pos = pos_of(n);
     if (const auto attributes = n.attributes(); !attributes.empty()) {
         e.attributes.reserve(attributes.size());
@@ -58,7 +58,7 @@ void Reader::verbatim(XmlElement& e, const Element n, std::string_view after, st
     // An element's own text is the text before its first child (mixed content): the start of the
     // text. Most kept elements hold only that text: it is assigned, not inserted before nothing.
     if (n.node().has_value) {
-        if (e.text.empty()) e.text.assign(n.value());
+        if (e.text.empty()) set(e.text, n.value());
         else e.text.insert(0, n.value());
     }
 }
