@@ -4,7 +4,7 @@
 # ../shared/corpus/esi into one EtherCATInfo, then reports the peak RSS of `esi-lint -j1` on it
 # next to a bare pugixml parse of the same file (bench/bare_parse_peak.cpp) and the reader alone
 # (bench/lint_stage read), each as a multiple of the file size, against the target of
-# 3 x file + 30 MB; and the CPU time (user + system) of `esi-lint -j1 --format json` against
+# 3 x file + 30 MiB (all in MiB); and the CPU time (user + system) of `esi-lint -j1 --format json` against
 # `lint_stage bare` on it, five runs of each in turn, against the target ratio of 1.6.
 #   bench/big_catalogue_rss.sh [BUILD_DIR] [TARGET_MB]     (defaults: build 40)
 # BUILD_DIR must be configured with -DESI_BUILD_BENCH=ON. The merged file is written to
@@ -108,14 +108,16 @@ rm -f "$out_dir/lint.ms" "$out_dir/bare.ms"
 
 awk -v bytes="$bytes" -v devices="$device_count" -v passes="$pass" -v bare="$bare_kb" -v read="$read_kb" -v lint="$lint_kb" \
     -v lint_ms="$lint_ms" -v bare_ms="$bare_ms" 'BEGIN {
+    # One unit throughout: MiB (GNU time reports KiB), the file included.
     mb = bytes / 1e6
-    printf "merged file: %s, %.1f MB, %d devices (%d pass%s over the Beckhoff catalogues)\n", "'"$merged"'", mb, devices, passes, passes == 1 ? "" : "es"
-    printf "%-34s %9s %8s\n", "peak RSS", "MB", "x file"
+    mib = bytes / 1048576
+    printf "merged file: %s, %.1f MB = %.1f MiB, %d devices (%d pass%s over the Beckhoff catalogues)\n", "'"$merged"'", mb, mib, devices, passes, passes == 1 ? "" : "es"
+    printf "%-34s %9s %8s\n", "peak RSS", "MiB", "x file"
     printf "%-34s %9.1f %8.2f\n", "bare pugixml parse", bare / 1024, bare * 1024 / bytes
     printf "%-34s %9.1f %8.2f\n", "reader only (lint_stage read)*", read / 1024, read * 1024 / bytes
     printf "%-34s %9.1f %8.2f\n", "esi-lint -j1", lint / 1024, lint * 1024 / bytes
-    target = 3 * mb + 30
-    printf "target: 3 x file + 30 MB = %.1f MB; esi-lint %s\n", target, lint / 1024 <= target ? "meets it" : "is over it"
+    target = 3 * mib + 30
+    printf "target: 3 x file + 30 MiB = %.1f MiB; esi-lint %s\n", target, lint / 1024 <= target ? "meets it" : "is over it"
     printf "* lint_stage keeps the file bytes besides the copies the reader makes: one file size more than esi-lint holds\n"
     printf "CPU time, median of 5 in turn: esi-lint -j1 --format json %d ms, lint_stage bare %d ms, ratio %.2f (target 1.6)\n", lint_ms, bare_ms, lint_ms / bare_ms
 }'
