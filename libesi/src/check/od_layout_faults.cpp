@@ -1,7 +1,7 @@
 #include "check/od_layout_faults.hpp"
 
 #include <algorithm>
-#include <ranges>
+#include <functional>
 #include <vector>
 
 namespace esi::rules {
@@ -11,11 +11,24 @@ namespace {
 // The SubItems that take part in overlaps: sub-indices with a size.
 bool is_placed_subindex(const DataTypeSubItem& item) { return item.bit_size > 0 && item.subindex.has_value(); }
 
-// Records the overlaps among `items`, which come by BitOffs.
+// Whether the placed SubItems of `items` come by BitOffs as listed.
+bool placed_by_offset(const std::vector<DataTypeSubItem>& items) {
+    const DataTypeSubItem* previous = nullptr;
+    for (const DataTypeSubItem& item : items) {
+        if (!is_placed_subindex(item)) continue;
+        if (previous && item.bit_offset < previous->bit_offset) return false;
+        previous = &item;
+    }
+    return true;
+}
+
+// Records the overlaps among the placed SubItems of `items`, which come by BitOffs. (A loop that
+// skips the others rather than a filter view: clang rejects std::views::filter over libstdc++ 12.)
 template <class Items>
-void find_overlaps(Items&& items, LayoutFaults& out) {
+void find_overlaps(const Items& items, LayoutFaults& out) {
     const DataTypeSubItem* reach = nullptr;  // the item that extends furthest so far
     for (const DataTypeSubItem& item : items) {
+        if (!is_placed_subindex(item)) continue;
         if (reach && item.bit_offset < reach->bit_offset + reach->bit_size) {
             if (!out.overlapping) {
                 out.overlapping = &item;
@@ -37,14 +50,15 @@ LayoutFaults layout_faults(const DataType& type) {
         break;
     }
     const auto by_offset = [](const DataTypeSubItem& a, const DataTypeSubItem& b) { return a.bit_offset < b.bit_offset; };
-    auto placed = type.sub_items | std::views::filter(is_placed_subindex);
     // SubItems are listed by BitOffs as a rule, and are then walked where they are; only a list
     // out of order is copied and sorted (stably: among equal offsets the first listed comes first).
-    if (std::ranges::is_sorted(placed, by_offset)) {
-        find_overlaps(placed, out);
+    if (placed_by_offset(type.sub_items)) {
+        find_overlaps(type.sub_items, out);
         return out;
     }
-    std::vector<std::reference_wrapper<const DataTypeSubItem>> sorted(placed.begin(), placed.end());
+    std::vector<std::reference_wrapper<const DataTypeSubItem>> sorted;
+    for (const DataTypeSubItem& item : type.sub_items)
+        if (is_placed_subindex(item)) sorted.emplace_back(item);
     std::ranges::stable_sort(sorted, by_offset);
     find_overlaps(sorted, out);
     return out;
