@@ -149,7 +149,7 @@ inline void* allocate_small(std::size_t n) {
     return refill(k);
 }
 
-[[gnu::always_inline]] inline void release(void* p) {
+[[gnu::always_inline, maybe_unused]] inline void release(void* p) {
     if (owned(p)) {
         const std::size_t k = page_class[offset_of(p) >> page_shift];
         auto* b = static_cast<FreeBlock*>(p);
@@ -171,7 +171,7 @@ void* allocate(std::size_t n) {
     }
 }
 
-void* allocate_or_null(std::size_t n) noexcept {
+[[maybe_unused]] void* allocate_or_null(std::size_t n) noexcept {
     try {
         return allocate(n);
     } catch (...) {
