@@ -2,6 +2,7 @@
 // Numbers as ESI writes them: HexDecValue is decimal or "#x" hex (ETG.2000 schema); "0x" hex is
 // not valid ESI but is accepted with a diagnostic because real files contain it.
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -9,6 +10,17 @@
 #include <string_view>
 
 namespace esi {
+
+// The value of each byte as a hex digit, 0xFF for a byte that is none: one lookup per digit (a
+// decimal digit is one whose value is below 10). Every reader of numbers and hex data uses it.
+inline constexpr std::array<std::uint8_t, 256> hex_digit_values = [] {
+    std::array<std::uint8_t, 256> values{};
+    for (auto& v : values) v = 0xFF;
+    for (int c = '0'; c <= '9'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - '0');
+    for (int c = 'a'; c <= 'f'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'a' + 10);
+    for (int c = 'A'; c <= 'F'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'A' + 10);
+    return values;
+}();
 
 // A signed 65-bit value: ESI defaults reach 2^64-1 (ULINT) and go down to -2^63 (LINT).
 struct Number {

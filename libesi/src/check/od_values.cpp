@@ -18,31 +18,18 @@ Number from_pattern(std::uint64_t pattern, const ValueFormat& format) {
     return Number::from_unsigned(pattern);
 }
 
-// The value of each character as a hex digit, -1 for characters that are not one: a table look-up
-// per digit, since the rules read every default, minimum and maximum of the dictionaries.
-constexpr std::array<std::int8_t, 256> hex_digit_values = [] {
-    std::array<std::int8_t, 256> values{};
-    for (int c = 0; c < 256; ++c) {
-        if (c >= '0' && c <= '9') values[c] = static_cast<std::int8_t>(c - '0');
-        else if (c >= 'a' && c <= 'f') values[c] = static_cast<std::int8_t>(c - 'a' + 10);
-        else if (c >= 'A' && c <= 'F') values[c] = static_cast<std::int8_t>(c - 'A' + 10);
-        else values[c] = -1;
-    }
-    return values;
-}();
-
 }  // namespace
 
 std::optional<std::uint64_t> little_endian_pattern(const HexData& data) {
     const std::string& text = data.text;
     const std::size_t byte_count = text.size() / 2;
     if (text.empty() || text.size() % 2 != 0 || byte_count > 8) return std::nullopt;
-    const auto digit = [](char c) -> int { return hex_digit_values[static_cast<unsigned char>(c)]; };
+    const auto digit = [](char c) -> unsigned { return hex_digit_values[static_cast<unsigned char>(c)]; };
     std::uint64_t pattern = 0;
     for (std::size_t i = 0; i < byte_count; ++i) {
-        const int high = digit(text[2 * i]);
-        const int low = digit(text[2 * i + 1]);
-        if (high < 0 || low < 0) return std::nullopt;  // not hexBinary (HexData::valid)
+        const unsigned high = digit(text[2 * i]);
+        const unsigned low = digit(text[2 * i + 1]);
+        if (high > 15 || low > 15) return std::nullopt;  // not hexBinary (HexData::valid)
         pattern |= std::uint64_t(high * 16 + low) << (8 * i);
     }
     return pattern;

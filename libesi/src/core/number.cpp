@@ -18,22 +18,6 @@ bool Number::fits_unsigned_bits(unsigned bits) const {
     return magnitude < (std::uint64_t{1} << bits);
 }
 
-namespace {
-
-// The value of a hex digit, 0xFF for a byte that is none: one lookup per digit, and a decimal
-// digit is one whose value is below 10.
-constexpr std::array<std::uint8_t, 256> make_digit_values() {
-    std::array<std::uint8_t, 256> values{};
-    for (auto& v : values) v = 0xFF;
-    for (int c = '0'; c <= '9'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - '0');
-    for (int c = 'a'; c <= 'f'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'a' + 10);
-    for (int c = 'A'; c <= 'F'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'A' + 10);
-    return values;
-}
-constexpr std::array<std::uint8_t, 256> digit_values = make_digit_values();
-
-}  // namespace
-
 ParsedNumber parse_number(std::string_view text) {
     ParsedNumber result;
     text = trim(text);
@@ -71,7 +55,7 @@ ParsedNumber parse_number(std::string_view text) {
     const bool may_overflow = text.size() > (base == 16 ? 15u : 19u);
     std::uint64_t value = 0;
     for (char c : text) {
-        const unsigned digit = digit_values[static_cast<unsigned char>(c)];
+        const unsigned digit = hex_digit_values[static_cast<unsigned char>(c)];
         if (digit >= base) {
             result.error = NumberError::bad_digit;
             return result;

@@ -35,17 +35,6 @@ using Attr = xml_tree::Attribute;
 // compares the length, then a memcmp whose length is known at compile time, which the compiler
 // turns into a load or two, where string_view's operator== is an out-of-line call plus a memcmp
 // call. (always_inline: GCC otherwise keeps some instances out of line, a call per compare.)
-// The value of a hex digit, 0xFF for a byte that is none.
-constexpr std::array<std::uint8_t, 256> make_digit_values() {
-    std::array<std::uint8_t, 256> values{};
-    for (auto& v : values) v = 0xFF;
-    for (int c = '0'; c <= '9'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - '0');
-    for (int c = 'a'; c <= 'f'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'a' + 10);
-    for (int c = 'A'; c <= 'F'; ++c) values[static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(c - 'A' + 10);
-    return values;
-}
-inline constexpr std::array<std::uint8_t, 256> digit_values = make_digit_values();
-
 template <std::size_t N>
 [[gnu::always_inline]] inline bool is(std::string_view name, const char (&literal)[N]) {
     return name.size() == N - 1 && std::memcmp(name.data(), literal, N - 1) == 0;
@@ -139,7 +128,7 @@ private:
         std::uint64_t v = 0;
         if (p[0] == '#' && text.size() > 2 && p[1] == 'x') {
             for (p += 2; p < end; ++p) {
-                const unsigned digit = digit_values[static_cast<unsigned char>(*p)];
+                const unsigned digit = hex_digit_values[static_cast<unsigned char>(*p)];
                 if (digit > 15) return false;
                 v = v * 16 + digit;
             }
