@@ -36,6 +36,20 @@ namespace esi::xml_tree::scan {
     const __m128i allowed = _mm_or_si128(_mm_or_si128(bytes_equal(v, '\t'), bytes_equal(v, '\n')), bytes_equal(v, '\r'));
     return _mm_or_si128(_mm_andnot_si128(allowed, control), bytes_equal(v, static_cast<char>(0xEF)));
 }
+
+// The '<' that ends a short text at p, within its first 16 bytes, when nothing before it needs a
+// closer look (a control character, line breaks and tabs included, '&', ']' or 0xEF); null when
+// there is none. Needs 16 bytes of text at p.
+[[gnu::always_inline]] inline const char* short_plain_text_end(const char* p) {
+    const __m128i v = load16(p);
+    const unsigned markup = mask_of(bytes_equal(v, '<'));
+    if (markup == 0) return nullptr;
+    const __m128i control = _mm_cmpeq_epi8(_mm_min_epu8(v, _mm_set1_epi8(0x1F)), v);
+    const __m128i look =
+        _mm_or_si128(_mm_or_si128(control, bytes_equal(v, '&')), _mm_or_si128(bytes_equal(v, ']'), bytes_equal(v, static_cast<char>(0xEF))));
+    if (mask_of(look) & ((markup & (0u - markup)) - 1)) return nullptr;  // a byte to look at before the first '<'
+    return p + __builtin_ctz(markup);
+}
 #endif
 
 // The first byte that is not XML white space ([3] S).

@@ -514,14 +514,8 @@ bool TreeParser::other_markup(std::uint32_t owner, std::uint32_t* last_child) {
         return true;
     }
     if (static_cast<unsigned char>(first) <= ' ') return false;
-    const __m128i v = scan::load16(p);
-    const unsigned markup = scan::mask_of(scan::bytes_equal(v, '<'));
-    if (markup == 0) return false;
-    const __m128i control = _mm_cmpeq_epi8(_mm_min_epu8(v, _mm_set1_epi8(0x1F)), v);  // line breaks and tabs included
-    const __m128i look = _mm_or_si128(_mm_or_si128(control, scan::bytes_equal(v, '&')),
-                                      _mm_or_si128(scan::bytes_equal(v, ']'), scan::bytes_equal(v, static_cast<char>(0xEF))));
-    if (scan::mask_of(look) & ((markup & (0u - markup)) - 1)) return false;
-    const char* stop = p + __builtin_ctz(markup);
+    const char* const stop = scan::short_plain_text_end(p);
+    if (!stop) return false;
     Node& o = tree_.node(owner);
     if (!o.has_value && o.first_child == 0) {
         o.value = std::string_view(p, static_cast<std::size_t>(stop - p));
@@ -545,14 +539,8 @@ bool TreeParser::other_markup(std::uint32_t owner, std::uint32_t* last_child) {
     const char* stop = p;
     if (*p != '<') {
         if (static_cast<unsigned char>(*p) <= ' ') return false;  // white space first: the general way
-        const __m128i v = scan::load16(p);
-        const unsigned markup = scan::mask_of(scan::bytes_equal(v, '<'));
-        if (markup == 0) return false;
-        const __m128i control = _mm_cmpeq_epi8(_mm_min_epu8(v, _mm_set1_epi8(0x1F)), v);  // line breaks and tabs included
-        const __m128i look = _mm_or_si128(_mm_or_si128(control, scan::bytes_equal(v, '&')),
-                                          _mm_or_si128(scan::bytes_equal(v, ']'), scan::bytes_equal(v, static_cast<char>(0xEF))));
-        if (scan::mask_of(look) & ((markup & (0u - markup)) - 1)) return false;
-        stop = p + __builtin_ctz(markup);
+        stop = scan::short_plain_text_end(p);
+        if (!stop) return false;
     }
     const std::size_t length = name.size();
     const char* end_name = stop + 2;
