@@ -42,6 +42,15 @@ constexpr std::size_t longest_cached = std::size_t{8} << 20;
 
 std::size_t& length_of(void* mapping) { return *static_cast<std::size_t*>(mapping); }
 
+// `mapping` lengthened to `length` bytes (in place, or moved by the system without copying);
+// null, and `mapping` unchanged, when the system refuses.
+void* lengthened(void* mapping, std::size_t length) {
+    void* moved = ::mremap(mapping, length_of(mapping), length, MREMAP_MAYMOVE);
+    if (moved == MAP_FAILED) return nullptr;
+    length_of(moved) = length;
+    return moved;
+}
+
 // One thread's freed mappings. Trivially destructible: a buffer freed after the thread's
 // clean-up ran (an object of static storage, destroyed after the main thread's thread_local
 // objects) finds the cache closed and is unmapped at once.
@@ -66,12 +75,8 @@ struct MappingCache {
         void* mapping = mappings[chosen];
         mappings[chosen] = mappings[--count];
         if (length_of(mapping) >= length) return mapping;
-        void* moved = ::mremap(mapping, length_of(mapping), length, MREMAP_MAYMOVE);
-        if (moved == MAP_FAILED) {
-            ::munmap(mapping, length_of(mapping));
-            return nullptr;
-        }
-        length_of(moved) = length;
+        void* moved = lengthened(mapping, length);
+        if (!moved) ::munmap(mapping, length_of(mapping));
         return moved;
     }
 
@@ -151,9 +156,8 @@ void* reallocate_large_buffer(void* p, std::size_t old_bytes, std::size_t new_by
         void* mapping = static_cast<char*>(p) - header_bytes;
         const std::size_t length = mapping_length(new_bytes);
         if (length <= length_of(mapping)) return p;
-        void* moved = ::mremap(mapping, length_of(mapping), length, MREMAP_MAYMOVE);
-        if (moved == MAP_FAILED) throw std::bad_alloc();
-        length_of(moved) = length;
+        void* moved = lengthened(mapping, length);
+        if (!moved) throw std::bad_alloc();
         return static_cast<char*>(moved) + header_bytes;
     }
     void* bigger = allocate_large_buffer(new_bytes);

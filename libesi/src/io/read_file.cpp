@@ -16,6 +16,11 @@ namespace esi {
 
 namespace {
 
+// The message of every reader for an input over the size limit.
+std::string too_large(std::uint64_t max_bytes) {
+    return "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+}
+
 // A buffer of `size` bytes (and a NUL after them) whose bytes are not initialised: they are read
 // into right after.
 struct Growing {
@@ -42,7 +47,7 @@ bool read_all(std::FILE* file, const std::filesystem::path& path, std::uint64_t 
     std::error_code size_error;
     const std::uintmax_t size = std::filesystem::file_size(path, size_error);
     if (!size_error && size > max_bytes) {
-        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+        error = too_large(max_bytes);
         return false;
     }
     if (!size_error) sink.read(file, static_cast<std::size_t>(size));
@@ -51,7 +56,7 @@ bool read_all(std::FILE* file, const std::filesystem::path& path, std::uint64_t 
         const std::size_t n = std::fread(buffer, 1, sizeof buffer, file);
         sink.append(buffer, n);
         if (sink.size() > max_bytes) {
-            error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+            error = too_large(max_bytes);
             return false;
         }
         more = n == sizeof buffer;
@@ -194,7 +199,7 @@ std::optional<std::string> read_regular_file_bytes(const std::filesystem::path& 
     }
     if (static_cast<std::uint64_t>(st.st_size) > max_bytes) {
         ::close(fd);
-        error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+        error = too_large(max_bytes);
         return std::nullopt;
     }
     std::string bytes(static_cast<std::size_t>(st.st_size), '\0');
@@ -212,7 +217,7 @@ std::optional<std::string> read_regular_file_bytes(const std::filesystem::path& 
         have += static_cast<std::size_t>(n);
         if (have > max_bytes) {
             ::close(fd);
-            error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+            error = too_large(max_bytes);
             return std::nullopt;
         }
     }
@@ -228,7 +233,7 @@ std::optional<std::string> read_stdin_bytes(std::string& error, std::uint64_t ma
         const std::size_t n = std::fread(buffer, 1, sizeof buffer, stdin);
         bytes.append(buffer, n);
         if (bytes.size() > max_bytes) {
-            error = "larger than " + std::to_string(max_bytes >> 20) + " MiB, the input size limit";
+            error = too_large(max_bytes);
             return std::nullopt;
         }
         if (n < sizeof buffer) break;

@@ -9,10 +9,8 @@
 namespace esi {
 
 namespace {
-constexpr std::uint32_t to_end = std::numeric_limits<std::uint32_t>::max();
-}  // namespace
 
-namespace {
+constexpr std::uint32_t to_end = std::numeric_limits<std::uint32_t>::max();
 
 std::vector<std::string> split_rules(std::string_view list) {
     std::vector<std::string> out;
