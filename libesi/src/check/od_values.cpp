@@ -57,7 +57,8 @@ Number normalized(const Number& value, const ValueFormat& format) {
     return from_pattern(~value.magnitude + 1u, format);
 }
 
-std::optional<Number> value_of(const std::optional<Number>& value, const std::optional<HexData>& data, const ValueFormat& format) {
+template <typename DataField>
+std::optional<Number> value_of(const RareOptional<Number>& value, const DataField& data, const ValueFormat& format) {
     if (value) return normalized(*value, format);
     if (data) return number_from_data(*data, format);
     return std::nullopt;

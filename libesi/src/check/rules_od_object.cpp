@@ -46,20 +46,20 @@ bool is_category(std::string_view value) { return value == "m" || value == "o" |
 
 // A value of an entry, where its default, minimum and maximum come from.
 struct EntryValues {
-    const std::optional<Number>& default_value;
+    const RareOptional<Number>& default_value;
     const std::optional<HexData>& default_data;
-    const std::optional<Number>& min_value;
-    const std::optional<HexData>& min_data;
-    const std::optional<Number>& max_value;
-    const std::optional<HexData>& max_data;
-    const std::optional<std::string>& default_string;
+    const RareOptional<Number>& min_value;
+    const RareOptional<HexData>& min_data;
+    const RareOptional<Number>& max_value;
+    const RareOptional<HexData>& max_data;
+    const RareOptional<std::string>& default_string;
 };
 
 EntryValues values_of(const ObjectInfo& info) {
     return {info.default_value, info.default_data, info.min_value, info.min_data, info.max_value, info.max_data, info.default_string};
 }
 
-const std::optional<HexData> no_data;
+const RareOptional<HexData> no_data;
 
 EntryValues values_of(const DataTypeSubItem& item) {
     return {item.default_value, item.default_data, item.min_value, no_data, item.max_value, no_data, item.default_string};

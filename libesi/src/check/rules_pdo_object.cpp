@@ -301,16 +301,16 @@ void check_entry_not_mappable(const EsiDocument& document, RuleContext& context)
         if (!target) return;
         const Object* object = m.object();
         // The sub-item's own flags win; a record's object-level flags cover sub-items without.
-        const std::optional<std::string>* mapping = nullptr;
-        if (target->flags && target->flags->pdo_mapping) mapping = &target->flags->pdo_mapping;
-        else if (object->flags && object->flags->pdo_mapping) mapping = &object->flags->pdo_mapping;
+        const std::string* mapping = nullptr;
+        if (target->flags && target->flags->pdo_mapping) mapping = &*target->flags->pdo_mapping;
+        else if (object->flags && object->flags->pdo_mapping) mapping = &*object->flags->pdo_mapping;
         // Without any PdoMapping flag the ESI says nothing about mappability: generators such as
         // SOES's and Beckhoff's own communication objects (0x1C32:20, 0x1800:09) omit it, and
         // devices map them all the same.
         if (!mapping) return;
         const bool rx = pdo.direction == PdoDirection::rx;
         const char wanted = rx ? 'r' : 't';
-        const std::string& flag = **mapping;
+        const std::string& flag = *mapping;
         for (char c : flag)
             if ((c | 0x20) == wanted) return;
         std::string message = entry_label(entry) + " is mapped into " + std::string(pdo.element_name()) + " " +

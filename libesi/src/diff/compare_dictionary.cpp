@@ -77,7 +77,7 @@ void compare_info_values(Recorder& r, const std::string& p, std::uint32_t object
     const bool mapping = is_mapping_or_assignment(object_index);
     const bool as_hex_a = mapping || (ea.basic && ea.basic->type_class == TypeClass::bit_string);
     const bool as_hex_b = mapping || (eb.basic && eb.basic->type_class == TypeClass::bit_string);
-    auto get = [](const ObjectInfo* info, auto member_number, auto member_data, const std::optional<std::string>* string,
+    auto get = [](const ObjectInfo* info, auto member_number, auto member_data, const RareOptional<std::string>* string,
                   const ObjectEntry& e, bool as_hex) {
         if (!info) return EntryValue{};
         return value_of(info->*member_number, info->*member_data, string ? *string : std::nullopt, e.bit_size, e.basic, as_hex);

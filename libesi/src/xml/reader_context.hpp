@@ -103,6 +103,7 @@ private:
     }
     static void text(std::string& field, const Element node) { set(field, trim(pcdata(node))); }
     static void text(std::optional<std::string>& field, const Element node) { field.emplace(trim(pcdata(node))); }
+    static void text(RareOptional<std::string>& field, const Element node) { field.emplace(trim(pcdata(node))); }
 
     // Where a scalar was read from: named ("Sm@StartAddress", or the element's name) and located
     // only when the value is bad, so that a good value costs no string allocation and no

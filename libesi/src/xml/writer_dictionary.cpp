@@ -35,13 +35,14 @@ void write_flags(XmlEmitter& out, const ObjectFlags& flags) {
         if (flags.access) out.text(*flags.access);
         out.end();
     }
-    const std::pair<std::string_view, const std::optional<std::string>*> texts[] = {
-        {"Category", &flags.category}, {"PdoMapping", &flags.pdo_mapping}, {"SafetyMapping", &flags.safety_mapping}};
-    for (const auto& [element, value] : texts) {
-        if (!*value) continue;
+    const auto text_leaf = [&](std::string_view element, const auto& value) {
+        if (!value) return;
         children.at(element);
-        out.leaf(element, **value);
-    }
+        out.leaf(element, *value);
+    };
+    text_leaf("Category", flags.category);
+    text_leaf("PdoMapping", flags.pdo_mapping);
+    text_leaf("SafetyMapping", flags.safety_mapping);
     if (flags.attribute) {
         children.at("Attribute");
         out.leaf("Attribute", identity_hex(*flags.attribute).view());
@@ -67,8 +68,8 @@ void write_flags(XmlEmitter& out, const ObjectFlags& flags) {
 }
 
 // Min/Max/Default values are decimal: one spelling for signed, unsigned and 64-bit values alike.
-void write_values(XmlEmitter& out, ChildPlacer& children, const std::optional<Number>& min, const std::optional<Number>& max,
-                  const std::optional<Number>& default_value) {
+void write_values(XmlEmitter& out, ChildPlacer& children, const RareOptional<Number>& min, const RareOptional<Number>& max,
+                  const RareOptional<Number>& default_value) {
     if (min) {
         children.at("MinValue");
         leaf_decimal(out, "MinValue", *min);

@@ -111,7 +111,7 @@ std::optional<ObjectInfo> SourceParser::info(const Fields& f, const Dictionary& 
     const bool real = type.basic && type.basic->type_class == TypeClass::real;
     const bool text = type.basic && type.basic->type_class == TypeClass::visible_string;
 
-    auto typed = [&](std::string_view key, std::optional<Number>& number, std::optional<HexData>& data, std::optional<std::string>* str) {
+    auto typed = [&](std::string_view key, RareOptional<Number>& number, auto& data, RareOptional<std::string>* str) {
         const Node* n = f.find(key);
         if (!n) return;
         if (integer) {
@@ -139,7 +139,7 @@ std::optional<ObjectInfo> SourceParser::info(const Fields& f, const Dictionary& 
     typed("default", info.default_value, info.default_data, &info.default_string);
     typed("min", info.min_value, info.min_data, nullptr);
     typed("max", info.max_value, info.max_data, nullptr);
-    auto raw = [&](std::string_view key, std::string_view typed_key, std::optional<HexData>& data) {
+    auto raw = [&](std::string_view key, std::string_view typed_key, auto& data) {
         const Node* n = f.find(key);
         if (!n) return;
         if (f.has(typed_key))
@@ -170,7 +170,7 @@ std::optional<ObjectSubItemInfo> SourceParser::info_sub_item(const Node& node) {
     ObjectSubItemInfo s;
     s.pos = s.info.pos = f->pos();
     if (r_.require(*f, "name", "an info sub-item")) s.name = r_.text(*f->find("name"), "name").value_or("");
-    auto value = [&](std::string_view key, std::string_view data_key, std::optional<Number>& number, std::optional<HexData>& data) {
+    auto value = [&](std::string_view key, std::string_view data_key, RareOptional<Number>& number, auto& data) {
         if (const Node* n = f->find(key)) number = r_.number(*n, key);
         if (const Node* n = f->find(data_key)) {
             if (f->has(key))

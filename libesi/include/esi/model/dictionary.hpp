@@ -2,20 +2,23 @@
 // Profile/Dictionary: data types and objects of the CoE object dictionary.
 
 #include "esi/model/common.hpp"
+#include "esi/model/rare_optional.hpp"
 #include "esi/number.hpp"
 
 namespace esi {
 
+// Absent fields that are rare in vendor files are RareOptional: a dictionary holds tens of
+// thousands of Flags, Info and SubItem elements, and the model's size is mostly theirs.
 struct ObjectFlags {
     std::optional<std::string> access;  // ro, rw, wo
-    std::optional<std::string> access_read_restrictions;
-    std::optional<std::string> access_write_restrictions;
+    RareOptional<std::string> access_read_restrictions;
+    RareOptional<std::string> access_write_restrictions;
     std::optional<std::string> category;     // m, o, c
-    std::optional<std::string> pdo_mapping;  // R, T, RT, TR
-    std::optional<std::string> safety_mapping;
+    RareOptional<std::string> pdo_mapping;  // R, T, RT, TR
+    RareOptional<std::string> safety_mapping;
     std::optional<std::uint32_t> attribute;
-    std::optional<std::string> transition;
-    std::optional<std::string> sdo_access;
+    RareOptional<std::string> transition;
+    RareOptional<std::string> sdo_access;
     std::optional<std::int32_t> backup;
     std::optional<std::int32_t> setting;
     SourcePos pos;
@@ -26,15 +29,15 @@ struct ObjectSubItemInfo;
 
 // ObjectInfoType: default and limit values of an object or of one of its sub-items.
 struct ObjectInfo {
-    std::optional<std::string> default_string;
-    std::optional<HexData> min_data;
-    std::optional<HexData> max_data;
+    RareOptional<std::string> default_string;
+    RareOptional<HexData> min_data;
+    RareOptional<HexData> max_data;
     std::optional<HexData> default_data;
-    std::optional<Number> min_value;
-    std::optional<Number> max_value;
-    std::optional<Number> default_value;
+    RareOptional<Number> min_value;
+    RareOptional<Number> max_value;
+    RareOptional<Number> default_value;
     std::vector<ObjectSubItemInfo> sub_items;
-    std::optional<std::string> display_name;
+    RareOptional<std::string> display_name;
     std::optional<std::uint32_t> unit;
     SourcePos pos;
     Extras extras;
@@ -82,11 +85,11 @@ struct DataTypeSubItem {
     Names comments;
     std::uint64_t bit_size = 0;
     std::uint64_t bit_offset = 0;  // BitOffs
-    std::optional<std::string> default_string;
+    RareOptional<std::string> default_string;
     std::optional<HexData> default_data;
-    std::optional<Number> min_value;
-    std::optional<Number> max_value;
-    std::optional<Number> default_value;
+    RareOptional<Number> min_value;
+    RareOptional<Number> max_value;
+    RareOptional<Number> default_value;
     std::optional<ObjectFlags> flags;
     SourcePos pos;
     Extras extras;

@@ -17,6 +17,7 @@
 #include "esi/model/typed_value.hpp"
 #include "esi/diagnostic.hpp"
 #include "esi/model/common.hpp"
+#include "esi/model/rare_optional.hpp"
 #include "esi/number.hpp"
 #include "esi/yaml/format_keys.hpp"
 
@@ -99,6 +100,9 @@ public:
         if (const Node* n = f.find(key)) out = boolean(*n, key);
     }
     void optional_text(const Fields& f, std::string_view key, std::optional<std::string>& out) {
+        if (const Node* n = f.find(key)) out = text(*n, key);
+    }
+    void optional_text(const Fields& f, std::string_view key, RareOptional<std::string>& out) {
         if (const Node* n = f.find(key)) out = text(*n, key);
     }
 
