@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/sanitizers.hpp"
 #include "heap/small_block_heap.hpp"
 
 namespace {
@@ -170,17 +171,7 @@ TEST(SmallBlockHeap, ManyThreadsAllocatingAndFreeingAcrossKeepEveryBlockIntact) 
 
 // AddressSanitizer's own operator new ends the process on an impossible size (unless told
 // allocator_may_return_null), where ours throws.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool asan_build = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool asan_build = true;
-#else
-constexpr bool asan_build = false;
-#endif
-#else
-constexpr bool asan_build = false;
-#endif
+constexpr bool asan_build = ESI_ADDRESS_SANITIZER;
 
 TEST(SmallBlockHeap, AnImpossibleSizeThrowsBadAlloc) {
     if (asan_build) GTEST_SKIP() << "AddressSanitizer's operator new aborts on an impossible size instead of throwing";

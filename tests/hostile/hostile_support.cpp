@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/sanitizers.hpp"
 #include "support/test_support.hpp"
 
 namespace esi::test {
@@ -267,19 +268,7 @@ ChildResult run_child(const std::vector<std::string>& argv, const ChildOptions& 
     return run_child_here(argv, options);
 }
 
-int memory_scale() {
-#if defined(__SANITIZE_ADDRESS__)
-    return 4;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-    return 4;
-#else
-    return 1;
-#endif
-#else
-    return 1;
-#endif
-}
+int memory_scale() { return ESI_ADDRESS_SANITIZER ? 4 : 1; }
 
 bool permissions_apply() { return geteuid() != 0; }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "esi/encoding.hpp"
+#include "core/sanitizers.hpp"
 #include "lsp/lsp_client.hpp"
 #include "support/test_support.hpp"
 
@@ -29,19 +30,7 @@ std::string synthetic_catalogue(std::size_t target_bytes) {
 
 // Under the sanitizers (the CI's second tree) a quarter of the size shows the same and keeps the
 // test in seconds; the server's code paths do not depend on the size.
-constexpr std::size_t target_megabytes() {
-#if defined(__SANITIZE_ADDRESS__)
-    return 10;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-    return 10;
-#else
-    return 40;
-#endif
-#else
-    return 40;
-#endif
-}
+constexpr std::size_t target_megabytes() { return ESI_ADDRESS_SANITIZER ? 10 : 40; }
 
 TEST(LspBigDocument, FortyMegabytesDoNotBlockTheServer) {
     ESI_REQUIRE_CORPUS();

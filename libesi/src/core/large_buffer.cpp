@@ -11,17 +11,10 @@
 #include <cstring>
 #include <new>
 
+#include "core/sanitizers.hpp"
+
 // Under a sanitizer every buffer is a heap block, so that reads and writes past its end are caught.
-#if defined(__SANITIZE_ADDRESS__)
-#define ESI_LARGE_BUFFER_MAPPINGS 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-#define ESI_LARGE_BUFFER_MAPPINGS 0
-#endif
-#endif
-#ifndef ESI_LARGE_BUFFER_MAPPINGS
-#define ESI_LARGE_BUFFER_MAPPINGS 1
-#endif
+#define ESI_LARGE_BUFFER_MAPPINGS (!ESI_SANITIZER)
 
 namespace esi {
 

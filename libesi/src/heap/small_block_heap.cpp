@@ -13,16 +13,10 @@
 #include <mutex>
 #include <new>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define ESI_SMALL_BLOCK_HEAP 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(memory_sanitizer) || __has_feature(thread_sanitizer)
-#define ESI_SMALL_BLOCK_HEAP 0
-#endif
-#endif
-#ifndef ESI_SMALL_BLOCK_HEAP
-#define ESI_SMALL_BLOCK_HEAP 1
-#endif
+#include "core/sanitizers.hpp"
+
+// A sanitizer must see every allocation: the heap steps aside (small_block_heap.hpp).
+#define ESI_SMALL_BLOCK_HEAP (!ESI_SANITIZER)
 
 namespace esi::heap {
 
