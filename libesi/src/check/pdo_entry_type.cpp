@@ -45,13 +45,11 @@ EntryType entry_type(const TypeIndex& types, const PdoEntry& entry) {
 
 const EntryType& EntryTypes::of(const PdoEntry& entry) {
     if (!entry.data_type) return absent_;
-    const std::string_view text = trim(*entry.data_type);
-    if (last_ && text == last_text_) return *last_;
-    auto it = by_text_.find(text);
-    if (it == by_text_.end()) it = by_text_.emplace(text, entry_type(types_, entry)).first;
-    last_text_ = text;
-    last_ = &it->second;  // unordered_map nodes do not move
-    return it->second;
+    return *last_.get(trim(*entry.data_type), [&](std::string_view text) {
+        auto it = by_text_.find(text);
+        if (it == by_text_.end()) it = by_text_.emplace(text, entry_type(types_, entry)).first;
+        return &it->second;  // unordered_map nodes do not move
+    });
 }
 
 }  // namespace esi::rules

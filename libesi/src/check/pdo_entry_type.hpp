@@ -9,6 +9,7 @@
 #include "esi/data_types.hpp"
 #include "esi/model/dictionary.hpp"
 #include "esi/model/pdo.hpp"
+#include "check/last_name_answer.hpp"
 #include "check/od_type_index.hpp"
 
 namespace esi::rules {
@@ -38,10 +39,9 @@ private:
     const TypeIndex& types_;
     EntryType absent_;  // no DataType element
     std::unordered_map<std::string_view, EntryType> by_text_;
-    // The text asked last and its answer: neighbouring entries mostly share a DataType (a PDO of
-    // eight BOOL inputs), and a comparison with the last text spares the hash of it.
-    std::string_view last_text_;
-    const EntryType* last_ = nullptr;
+    // Neighbouring entries mostly share a DataType (a PDO of eight BOOL inputs): a comparison
+    // with the text asked last spares the hash of it.
+    LastNameAnswer<const EntryType*> last_;
 };
 
 }  // namespace esi::rules
