@@ -301,18 +301,6 @@ constexpr Rule od_array_size{
 
 // ---- od-bitsize -----------------------------------------------------------------------------
 
-// implied_bit_size for the name of a DataType, most of which are plain names (DT1018) that imply
-// nothing: only basic type names, STRING(n) and ARRAY [..] OF names are worth a parse.
-std::optional<std::uint64_t> size_implied_by_name(std::string_view name) {
-    const std::string_view trimmed = trim(name);
-    if (const BasicType* basic = find_basic_type(trimmed)) {
-        if (basic->bit_size == 0) return std::nullopt;
-        return basic->bit_size;
-    }
-    if (!trimmed.starts_with("STRING") && !trimmed.starts_with("ARRAY")) return std::nullopt;
-    return implied_bit_size(name);
-}
-
 void check_bitsize(const EsiDocument& document, RuleContext& context) {
     for (const auto& scope : context.cache().dictionary_scopes(document)) {
         const TypeIndex& types = context.cache().types(scope.dictionary);
@@ -331,7 +319,7 @@ void check_bitsize(const EsiDocument& document, RuleContext& context) {
         for (const auto& type : scope.dictionary->data_types) {
             // A DataType named like a basic, STRING(n) or array type must have the size the name implies.
             if (type.bit_size > 0 && types.is_first_of_name(type)) {
-                if (const std::optional<std::uint64_t> implied = size_implied_by_name(type.name); implied && *implied != type.bit_size)
+                if (const std::optional<std::uint64_t> implied = implied_bit_size(type.name); implied && *implied != type.bit_size)
                     context.report(type.name_pos.line ? type.name_pos : type.pos, "DataType " + type.name + " has BitSize " +
                                                                                       std::to_string(type.bit_size) + " but " + type.name +
                                                                                       " is " + bits_text(*implied));

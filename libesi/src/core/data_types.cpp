@@ -217,6 +217,13 @@ TypeName parse_type_name(std::string_view text) {
 }
 
 std::optional<std::uint64_t> implied_bit_size(std::string_view type_name) {
+    // Only STRING(n) and ARRAY [..] OF names need taking apart; any other name is a basic type or
+    // implies nothing (the DataTypes of a Dictionary, DT1018 …), and is not copied into a TypeName.
+    if (const std::string_view s = trim(type_name); !s.starts_with("STRING") && !s.starts_with("ARRAY")) {
+        const BasicType* basic = find_basic_type(s);
+        if (!basic || basic->bit_size == 0) return std::nullopt;
+        return basic->bit_size;
+    }
     const TypeName t = parse_type_name(type_name);
     switch (t.kind) {
         case TypeName::Kind::basic:
