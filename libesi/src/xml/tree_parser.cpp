@@ -300,8 +300,7 @@ bool TreeParser::attribute(std::uint32_t element, std::string_view element_name)
     std::string_view value;
     if (!attribute_value(attribute_name, value)) return false;
     attributes.push_back({attribute_name, value});
-    if (namespace_observer_ && attribute_name.starts_with("xmlns") && (attribute_name.size() == 5 || attribute_name[5] == ':'))
-        namespace_observer_->declared(value);
+    if (namespace_observer_ && is_namespace_declaration(attribute_name)) namespace_observer_->declared(value);
     return true;
 }
 

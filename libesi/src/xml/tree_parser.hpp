@@ -47,6 +47,11 @@ public:
     virtual void declared(std::string_view uri) = 0;
 };
 
+// Whether an attribute of that name declares a namespace: xmlns or xmlns:prefix.
+[[nodiscard]] inline bool is_namespace_declaration(std::string_view attribute_name) {
+    return attribute_name.starts_with("xmlns") && (attribute_name.size() == 5 || attribute_name[5] == ':');
+}
+
 // The base-from-member idiom: the Checker the Scanner refers to exists before the Scanner.
 struct CheckerHolder {
     CheckerHolder(std::string_view text, SourceEncoding encoding) : checker(text, encoding) {}

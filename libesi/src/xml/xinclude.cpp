@@ -78,7 +78,7 @@ XIncludeCheck::XIncludeCheck(const SourceText& source, xml_tree::TreeParser& par
     : source_(source), parser_(parser), diagnostics_(diagnostics) {
     parser_.observe_namespaces(this);
     for (const xml_tree::Attribute& a : root.attributes())
-        if (a.name.starts_with("xmlns") && (a.name.size() == 5 || a.name[5] == ':')) declared(a.value);
+        if (xml_tree::is_namespace_declaration(a.name)) declared(a.value);
     if (watching_) start_tag(root);
 }
 
