@@ -25,29 +25,17 @@ const BasicType* basic_or_string(std::string_view name) {
 
 TypeIndex::TypeIndex(const Dictionary& dictionary) : TypeIndex(&dictionary) {}
 
-TypeIndex::TypeIndex(const Dictionary* dictionary) : dictionary_(dictionary), names_(dictionary) {
-    if (!dictionary) return;
-    // Whether the index holds each DataType (the first of its exact name), and whether find()
-    // answers it (find trims the name it is given, so a name with blanks around it never finds
-    // its own DataType).
-    const auto& types = dictionary->data_types;
-    std::vector<bool> indexed(types.size());
-    first_of_name_.resize(types.size());
-    for (std::size_t i = 0; i < types.size(); ++i) {
-        indexed[i] = names_.is_first_of_name(types[i]);
-        first_of_name_[i] = indexed[i] && trim(types[i].name).size() == types[i].name.size();
-    }
-    find_cycles(*dictionary, indexed);
+TypeIndex::TypeIndex(const Dictionary* dictionary) : names_(dictionary) {
+    if (dictionary) find_cycles(*dictionary);
 }
 
-void TypeIndex::find_cycles(const Dictionary& dictionary, const std::vector<bool>& indexed) {
+void TypeIndex::find_cycles(const Dictionary& dictionary) {
     // Every DataType has at most one BaseType, so the types form chains that either end or run
     // into one loop. One walk per chain, marking what it passed, finds every loop in linear time.
     enum class State { unvisited, on_path, done };
     // States by position in DataTypes (every DataType pointer here points into it).
     std::vector<State> states(dictionary.data_types.size(), State::unvisited);
-    const auto position = [&](const DataType* t) { return static_cast<std::size_t>(t - dictionary.data_types.data()); };
-    const auto state = [&](const DataType* t) -> State& { return states[position(t)]; };
+    const auto state = [&](const DataType* t) -> State& { return states[static_cast<std::size_t>(t - dictionary.data_types.data())]; };
     const auto next = [&](const DataType* t) -> const DataType* {
         if (!t->base_type) return nullptr;
         const std::string_view base = trim(*t->base_type);
@@ -61,7 +49,7 @@ void TypeIndex::find_cycles(const Dictionary& dictionary, const std::vector<bool
         const DataType* start = &type;
         // Only the first of a name is indexed; a chain starts at a type with a BaseType (one
         // without is a chain of its own that ends at once, and chains running into it stop there).
-        if (!type.base_type || !indexed[position(start)] || state(start) != State::unvisited) continue;
+        if (!type.base_type || !names_.is_first_of_name(type) || state(start) != State::unvisited) continue;
         path.clear();
         const DataType* t = start;
         while (t && state(t) == State::unvisited) {
@@ -160,7 +148,8 @@ TypeIndex::NameFacts TypeIndex::facts(std::string_view name) const {
 bool TypeIndex::in_base_type_cycle(const DataType& type) const { return in_cycle_.count(&type) != 0; }
 
 bool TypeIndex::is_first_of_name(const DataType& type) const {
-    return dictionary_ && first_of_name_[static_cast<std::size_t>(&type - dictionary_->data_types.data())];
+    // find() trims the name it is given, so a name with blanks around it never finds its own DataType.
+    return names_.is_first_of_name(type) && trim(type.name).size() == type.name.size();
 }
 
 }  // namespace esi::rules

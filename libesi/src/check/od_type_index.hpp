@@ -7,7 +7,6 @@
 #include <optional>
 #include <string_view>
 #include <unordered_set>
-#include <vector>
 
 #include "check/data_type_names.hpp"
 #include "esi/data_types.hpp"
@@ -52,12 +51,10 @@ public:
     [[nodiscard]] bool is_first_of_name(const DataType& type) const;
 
 private:
-    void find_cycles(const Dictionary& dictionary, const std::vector<bool>& indexed);
+    void find_cycles(const Dictionary& dictionary);
 
-    const Dictionary* dictionary_;
     DataTypeNames names_;
     std::unordered_set<const DataType*> in_cycle_;
-    std::vector<bool> first_of_name_;  // by position in DataTypes
 };
 
 }  // namespace esi::rules
