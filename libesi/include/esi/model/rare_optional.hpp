@@ -9,7 +9,6 @@
 // costs 40 bytes and a std::optional<HexData> 48 whether set or not; here 8, and the value's own
 // size only where it is set.
 
-#include <compare>
 #include <concepts>
 #include <memory>
 #include <optional>
@@ -31,14 +30,10 @@ public:
                  !std::is_same_v<std::remove_cvref_t<U>, std::in_place_t>)
     RareOptional(U&& value)  // NOLINT(google-explicit-constructor): like std::optional
         : value_(std::make_unique<T>(std::forward<U>(value))) {}
-    template <typename U>
-        requires std::is_constructible_v<T, const U&>
-    RareOptional(const std::optional<U>& value) {  // NOLINT(google-explicit-constructor)
-        if (value) value_ = std::make_unique<T>(*value);
-    }
+    // From a std::optional, taken by value: a temporary's value is moved in, not copied.
     template <typename U>
         requires std::is_constructible_v<T, U &&>
-    RareOptional(std::optional<U>&& value) {  // NOLINT(google-explicit-constructor)
+    RareOptional(std::optional<U> value) {  // NOLINT(google-explicit-constructor)
         if (value) value_ = std::make_unique<T>(std::move(*value));
     }
 
@@ -66,14 +61,9 @@ public:
         return *this;
     }
     template <typename U>
-        requires std::is_constructible_v<T, const U&>
-    RareOptional& operator=(const std::optional<U>& value) {
-        if (value) {
-            value_ = std::make_unique<T>(*value);
-        } else {
-            value_.reset();
-        }
-        return *this;
+        requires std::is_constructible_v<T, U &&>
+    RareOptional& operator=(std::optional<U> value) {
+        return *this = RareOptional(std::move(value));
     }
 
     ~RareOptional() = default;
