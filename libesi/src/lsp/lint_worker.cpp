@@ -49,7 +49,10 @@ void LintWorker::run() {
         const auto next = std::min_element(pending_.begin(), pending_.end(),
                                            [](const auto& a, const auto& b) { return a.second.due < b.second.due; });
         if (next->second.due > std::chrono::steady_clock::now()) {
-            wake_.wait_until(lock, next->second.due);  // a newer submission may move it
+            // A copy: wait_until reads the deadline again after waking, and by then a submission
+            // or a close may have replaced or erased the entry it would otherwise refer to.
+            const auto due = next->second.due;
+            wake_.wait_until(lock, due);
             continue;
         }
         LintRequest request = std::move(next->second.request);
