@@ -23,6 +23,14 @@ struct Published {
         std::unique_lock lock(mutex);
         return changed.wait_for(lock, timeout, [&] { return results.size() >= n; });
     }
+    // The worker's publish callback: records each result (it runs on the worker thread).
+    esi::lsp::LintWorker::Publish recorder() {
+        return [this](esi::lsp::LintResult result) {
+            const std::lock_guard lock(mutex);
+            results.emplace_back(result.uri, result.version);
+            changed.notify_all();
+        };
+    }
 };
 
 esi::lsp::LintRequest request(const std::string& uri, std::int64_t version) {
@@ -34,11 +42,7 @@ esi::lsp::LintRequest request(const std::string& uri, std::int64_t version) {
 TEST(LspLintWorker, OnlyTheNewestVersionIsPublished) {
     Published published;
     {
-        esi::lsp::LintWorker worker(0ms, [&](esi::lsp::LintResult result) {
-            const std::lock_guard lock(published.mutex);
-            published.results.emplace_back(result.uri, result.version);
-            published.changed.notify_all();
-        });
+        esi::lsp::LintWorker worker(0ms, published.recorder());
         for (std::int64_t version = 1; version <= 20; ++version) worker.submit(request("file:///a.xml", version));
         ASSERT_TRUE(published.wait_for(1, 20s));
         std::this_thread::sleep_for(100ms);  // time for a wrongly published older version to show
@@ -52,11 +56,7 @@ TEST(LspLintWorker, OnlyTheNewestVersionIsPublished) {
 TEST(LspLintWorker, ForgottenDocumentPublishesNothingAndBurstsAreDebounced) {
     Published published;
     {
-        esi::lsp::LintWorker worker(200ms, [&](esi::lsp::LintResult result) {
-            const std::lock_guard lock(published.mutex);
-            published.results.emplace_back(result.uri, result.version);
-            published.changed.notify_all();
-        });
+        esi::lsp::LintWorker worker(200ms, published.recorder());
         worker.submit(request("file:///closed.xml", 1));
         worker.forget("file:///closed.xml");
         for (std::int64_t version = 1; version <= 5; ++version) worker.submit(request("file:///b.xml", version));
@@ -73,11 +73,7 @@ TEST(LspLintWorker, ForgottenDocumentPublishesNothingAndBurstsAreDebounced) {
 TEST(LspLintWorker, ClosingTheDocumentTheWorkerWaitsForLeavesItWaitingOnNothingFreed) {
     Published published;
     {
-        esi::lsp::LintWorker worker(10s, [&](esi::lsp::LintResult result) {
-            const std::lock_guard lock(published.mutex);
-            published.results.emplace_back(result.uri, result.version);
-            published.changed.notify_all();
-        });
+        esi::lsp::LintWorker worker(10s, published.recorder());
         for (int round = 0; round < 10; ++round) {
             worker.submit(request("file:///closed.xml", round));
             std::this_thread::sleep_for(20ms);  // the worker is now waiting for its deadline
