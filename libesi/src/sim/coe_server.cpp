@@ -41,7 +41,11 @@ CoeReply CoeServer::handle(std::span<const std::uint8_t> request, AlState state,
     const std::size_t body_room = room - coe_header_bytes;
     if (service == service_sdo_request) {
         std::vector<std::uint8_t> response = sdo_.handle(body, state, body_room);
-        if (!response.empty()) reply.frames.push_back(with_header(service_sdo_response, response));
+        // The abort transfer (command 0x80) is an "SDO request" (ETG.1000.6 5.6.2.7, Table 29);
+        // masters recognise it only with that service (IgH's CoE state machine checks service 2,
+        // Wireshark's dissector decodes the abort code only there). Every other answer is a response.
+        const bool abort = !response.empty() && response[0] == 0x80;
+        if (!response.empty()) reply.frames.push_back(with_header(abort ? service_sdo_request : service_sdo_response, response));
         return reply;
     }
     if (service == service_sdo_information && sdo_info_) {
