@@ -1,5 +1,5 @@
-// The DC calls of igh_config.c, run: the generated files are compiled against the real ecrt.h
-// (IgH 1.6, ../shared/tools/igh/include) and linked with a recording stand-in for the master
+// The DC calls of igh_config.c, run: the generated files are compiled against the declarations
+// of IgH's documented interface (data/igh_api/ecrt.h, written for the tests) and linked with a recording stand-in for the master
 // library, and a program makes the calls an application makes — <network>_configure once,
 // <network>_dc_sync every cycle — so the test sees which ecrt calls reach the master, in what
 // order and with which values:
@@ -22,8 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 
 bool have(const std::string& tool) { return esi::test::run({"/bin/sh", "-c", "command -v " + tool}).exit_code == 0; }
-
-fs::path igh_include() { return esi::test::shared_dir() / "tools" / "igh" / "include"; }
 
 // Stand-ins for the master library: each call is printed, one line per call.
 constexpr const char* recording_master = R"(#include <stdio.h>
@@ -68,7 +66,7 @@ std::string run_application(const esi::net::Network& network, const std::string&
     esi::test::write_text(dir / "igh_config.c", esi::net::write_igh_source(network));
     esi::test::write_text(dir / "master.c", recording_master);
     esi::test::write_text(dir / "main.c", application(name, dc));
-    const auto built = esi::test::run({"gcc", "-std=c99", "-Wall", "-Wextra", "-Werror", "-I" + igh_include().string(), "-I" + dir.path().string(),
+    const auto built = esi::test::run({"gcc", "-std=c99", "-Wall", "-Wextra", "-Werror", "-I" + esi::test::igh_api_dir().string(), "-I" + dir.path().string(),
                                        (dir / "igh_config.c").string(), (dir / "master.c").string(), (dir / "main.c").string(), "-o",
                                        (dir / "app").string()});
     EXPECT_EQ(built.exit_code, 0) << built.err;

@@ -28,6 +28,8 @@ esi::net::BuildResult build_corpus_network(const std::string& yaml, const std::s
 
 std::string cherry_esi_file() { return (corpus_dir() / "eni" / "esi" / "cherry-embedded__CherryECAT__ECAT_CIA402_ESI.xml").string(); }
 
+std::filesystem::path igh_api_dir() { return source_dir() / "tests" / "net" / "data" / "igh_api"; }
+
 std::string diagnostics_text(const esi::Diagnostics& diagnostics) {
     std::string out;
     for (const esi::Diagnostic& d : diagnostics) out += esi::format_diagnostic(d);

@@ -19,6 +19,9 @@ const esi::net::LibraryIndex& corpus_index();
 esi::net::BuildResult build_corpus_network(const std::string& yaml, const std::string& name = "network.yaml");
 // CherryECAT's ECAT_CIA402 ESI (corpus/eni/esi), which the corpus networks pick by `esi_file:`.
 std::string cherry_esi_file();
+// The declarations of IgH's application interface that the generated igh_config.c uses,
+// written for the tests from IgH's documentation (tests/net/data/igh_api/ecrt.h).
+std::filesystem::path igh_api_dir();
 // All diagnostics as text, for failure messages.
 std::string diagnostics_text(const esi::Diagnostics& diagnostics);
 
