@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 #include "sim_esc/frame_builder.hpp"
 
 namespace esi::test {
@@ -13,7 +13,7 @@ using esc::Command;
 TEST(EscDatagram, BroadcastReadCountsEverySlaveAndIncrementsThePosition) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05)), c(eeprom_image(0x05));
     FrameBuilder f;
-    f.add(Command::brd, 0, esc::reg::type, {0, 0});
+    f.add(Command::brd, 0, ethercat::reg::type, {0, 0});
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a, &b, &c}), esc::FrameOutcome::answered);
     EXPECT_EQ(f.wkc(payload, 0), 3);
@@ -24,27 +24,27 @@ TEST(EscDatagram, BroadcastReadCountsEverySlaveAndIncrementsThePosition) {
 TEST(EscDatagram, AutoIncrementAddressesTheSlaveThatSeesZero) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05)), c(eeprom_image(0x05));
     FrameBuilder f;
-    f.add(Command::apwr, static_cast<std::uint16_t>(-1), esc::reg::station_address, {0xEA, 0x03});  // slave 1
-    f.add(Command::aprd, static_cast<std::uint16_t>(-2), esc::reg::station_address, {0, 0});         // slave 2
+    f.add(Command::apwr, static_cast<std::uint16_t>(-1), ethercat::reg::station_address, {0xEA, 0x03});  // slave 1
+    f.add(Command::aprd, static_cast<std::uint16_t>(-2), ethercat::reg::station_address, {0, 0});         // slave 2
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a, &b, &c}), esc::FrameOutcome::answered);
     EXPECT_EQ(f.wkc(payload, 0), 1);
-    EXPECT_EQ(b.peek16(esc::reg::station_address), 0x03EA);
-    EXPECT_EQ(a.peek16(esc::reg::station_address), 0);
+    EXPECT_EQ(b.peek16(ethercat::reg::station_address), 0x03EA);
+    EXPECT_EQ(a.peek16(ethercat::reg::station_address), 0);
     EXPECT_EQ(f.wkc(payload, 1), 1);
 }
 
 TEST(EscDatagram, ConfiguredAddressMatchesTheStationAddressOrTheEnabledAlias) {
     esc::Esc a(eeprom_image(0x05, 0, 0x0007)), b(eeprom_image(0x05));
     FrameBuilder setup;
-    setup.add(Command::apwr, 0, esc::reg::station_address, {0xE9, 0x03});
-    setup.add(Command::apwr, static_cast<std::uint16_t>(-1), esc::reg::station_address, {0xEA, 0x03});
+    setup.add(Command::apwr, 0, ethercat::reg::station_address, {0xE9, 0x03});
+    setup.add(Command::apwr, static_cast<std::uint16_t>(-1), ethercat::reg::station_address, {0xEA, 0x03});
     auto payload = setup.bytes();
     ASSERT_EQ(run(payload, {&a, &b}), esc::FrameOutcome::answered);
 
     FrameBuilder f;
-    f.add(Command::fprd, 0x03EA, esc::reg::station_address, {0, 0});
-    f.add(Command::fprd, 0x0007, esc::reg::station_address, {0, 0});  // alias, not enabled
+    f.add(Command::fprd, 0x03EA, ethercat::reg::station_address, {0, 0});
+    f.add(Command::fprd, 0x0007, ethercat::reg::station_address, {0, 0});  // alias, not enabled
     payload = f.bytes();
     ASSERT_EQ(run(payload, {&a, &b}), esc::FrameOutcome::answered);
     EXPECT_EQ(f.wkc(payload, 0), 1);
@@ -52,8 +52,8 @@ TEST(EscDatagram, ConfiguredAddressMatchesTheStationAddressOrTheEnabledAlias) {
     EXPECT_EQ(f.wkc(payload, 1), 0);
 
     FrameBuilder enable;
-    enable.add(Command::fpwr, 0x03E9, esc::reg::dl_alias, {0x01});
-    enable.add(Command::fprd, 0x0007, esc::reg::station_address, {0, 0});
+    enable.add(Command::fpwr, 0x03E9, ethercat::reg::dl_alias, {0x01});
+    enable.add(Command::fprd, 0x0007, ethercat::reg::station_address, {0, 0});
     payload = enable.bytes();
     ASSERT_EQ(run(payload, {&a, &b}), esc::FrameOutcome::answered);
     EXPECT_EQ(enable.wkc(payload, 1), 1);
@@ -63,32 +63,32 @@ TEST(EscDatagram, ConfiguredAddressMatchesTheStationAddressOrTheEnabledAlias) {
 TEST(EscDatagram, ReadWriteCountsThreeAndReturnsTheOldValue) {
     esc::Esc a(eeprom_image(0x05));
     FrameBuilder f;
-    f.add(Command::aprw, 0, esc::reg::station_address, {0x34, 0x12});
+    f.add(Command::aprw, 0, ethercat::reg::station_address, {0x34, 0x12});
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a}), esc::FrameOutcome::answered);
     EXPECT_EQ(f.wkc(payload, 0), 3);
     EXPECT_EQ(f.data(payload, 0), (std::vector<std::uint8_t>{0, 0}));
-    EXPECT_EQ(a.peek16(esc::reg::station_address), 0x1234);
+    EXPECT_EQ(a.peek16(ethercat::reg::station_address), 0x1234);
 }
 
 TEST(EscDatagram, WritesToReadOnlyRegistersAreIgnoredButCounted) {
     esc::Esc a(eeprom_image(0x05));
     FrameBuilder f;
-    f.add(Command::apwr, 0, esc::reg::type, {0xFF, 0xFF, 0xFF, 0xFF});
-    f.add(Command::apwr, 0, esc::reg::al_status, {0x08, 0x00});
-    f.add(Command::apwr, 0, esc::reg::pdi_control, {0x00});
+    f.add(Command::apwr, 0, ethercat::reg::type, {0xFF, 0xFF, 0xFF, 0xFF});
+    f.add(Command::apwr, 0, ethercat::reg::al_status, {0x08, 0x00});
+    f.add(Command::apwr, 0, ethercat::reg::pdi_control, {0x00});
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a}), esc::FrameOutcome::answered);
     EXPECT_EQ(f.wkc(payload, 0), 1);
-    EXPECT_EQ(a.peek8(esc::reg::type), 0x11);
-    EXPECT_EQ(a.peek8(esc::reg::al_status), 0x01);
-    EXPECT_EQ(a.peek8(esc::reg::pdi_control), 0x05);
+    EXPECT_EQ(a.peek8(ethercat::reg::type), 0x11);
+    EXPECT_EQ(a.peek8(ethercat::reg::al_status), 0x01);
+    EXPECT_EQ(a.peek8(ethercat::reg::pdi_control), 0x05);
 }
 
 TEST(EscDatagram, ArmwReadsAtTheAddressedSlaveAndWritesAtTheOthers) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05));
     FrameBuilder f;
-    f.add(Command::armw, 0, esc::reg::dc_system_time, std::vector<std::uint8_t>(4, 0));
+    f.add(Command::armw, 0, ethercat::reg::dc_system_time, std::vector<std::uint8_t>(4, 0));
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a, &b}, 5'000'000), esc::FrameOutcome::answered);
     EXPECT_EQ(f.wkc(payload, 0), 2);
@@ -99,21 +99,21 @@ TEST(EscDatagram, ArmwReadsAtTheAddressedSlaveAndWritesAtTheOthers) {
 TEST(EscDatagram, ReceiveTimesAreLatchedByAWriteTo0x0900) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05));
     FrameBuilder f;
-    f.add(Command::bwr, 0, esc::reg::dc_receive_time_port0, {0});
+    f.add(Command::bwr, 0, ethercat::reg::dc_receive_time_port0, {0});
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a, &b}, 10'000), esc::FrameOutcome::answered);
     // Slave 0 sees the frame at t, slave 1 at t + hop; it comes back to slave 0's port 1 at t + 2 hops.
-    EXPECT_EQ(a.peek32(esc::reg::dc_receive_time_port0), 10'000u);
-    EXPECT_EQ(a.peek32(esc::reg::dc_receive_time_port0 + 4), 11'000u);
-    EXPECT_EQ(b.peek32(esc::reg::dc_receive_time_port0), 10'500u);
-    EXPECT_EQ(b.peek32(esc::reg::dc_receive_time_port0 + 4), 0u);
+    EXPECT_EQ(a.peek32(ethercat::reg::dc_receive_time_port0), 10'000u);
+    EXPECT_EQ(a.peek32(ethercat::reg::dc_receive_time_port0 + 4), 11'000u);
+    EXPECT_EQ(b.peek32(ethercat::reg::dc_receive_time_port0), 10'500u);
+    EXPECT_EQ(b.peek32(ethercat::reg::dc_receive_time_port0 + 4), 0u);
 }
 
 TEST(EscDatagram, DlStatusShowsALineTopology) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05));
     FrameBuilder f;
-    f.add(Command::aprd, 0, esc::reg::dl_status, {0, 0});
-    f.add(Command::aprd, static_cast<std::uint16_t>(-1), esc::reg::dl_status, {0, 0});
+    f.add(Command::aprd, 0, ethercat::reg::dl_status, {0, 0});
+    f.add(Command::aprd, static_cast<std::uint16_t>(-1), ethercat::reg::dl_status, {0, 0});
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a, &b}), esc::FrameOutcome::answered);
     const auto first = f.data(payload, 0), last = f.data(payload, 1);
@@ -121,14 +121,14 @@ TEST(EscDatagram, DlStatusShowsALineTopology) {
     EXPECT_EQ(s0 & 0x0300, 0x0200u);  // port 0 open, communication
     EXPECT_EQ(s0 & 0x0C00, 0x0800u);  // port 1 open, communication
     EXPECT_EQ(s1 & 0x0C00, 0x0400u);  // end of the line: port 1 closed
-    EXPECT_TRUE(s0 & esc::reg::dl_status_pdi_operational);
+    EXPECT_TRUE(s0 & ethercat::reg::dl_status_pdi_operational);
 }
 
 TEST(EscDatagram, AClosedPort1LoopHidesTheRestOfTheLine) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05));
     FrameBuilder f;
-    f.add(Command::bwr, 0, esc::reg::dl_port, {0x0C});
-    f.add(Command::brd, 0, esc::reg::type, {0});
+    f.add(Command::bwr, 0, ethercat::reg::dl_port, {0x0C});
+    f.add(Command::brd, 0, ethercat::reg::type, {0});
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a, &b}), esc::FrameOutcome::answered);
     EXPECT_EQ(f.wkc(payload, 0), 1);

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 #include "sim_esc/frame_builder.hpp"
 
 namespace esi::test {
@@ -29,8 +29,8 @@ void configure(esc::Esc& a, std::uint16_t address, std::vector<std::uint8_t> dat
 TEST(EscFmmu, LrwCountsOnePerReadAndTwoPerWritePerSlave) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05));
     for (esc::Esc* e : {&a, &b}) {
-        configure(*e, esc::reg::fmmu0, fmmu(0x10000, 1, 0, 7, 0x1000, 0, 2));
-        configure(*e, esc::reg::fmmu0 + 16, fmmu(0x10001, 1, 0, 7, 0x1100, 0, 1));
+        configure(*e, ethercat::reg::fmmu0, fmmu(0x10000, 1, 0, 7, 0x1000, 0, 2));
+        configure(*e, ethercat::reg::fmmu0 + 16, fmmu(0x10001, 1, 0, 7, 0x1100, 0, 1));
     }
     const std::uint8_t input = 0x5C;
     a.write(0x1100, std::span<const std::uint8_t>(&input, 1));
@@ -46,8 +46,8 @@ TEST(EscFmmu, LrwCountsOnePerReadAndTwoPerWritePerSlave) {
 
 TEST(EscFmmu, BitGranularMappingsPackSeveralSlavesIntoOneByte) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05));
-    configure(a, esc::reg::fmmu0, fmmu(0x100, 1, 0, 1, 0x1000, 0, 2));  // logical bits 0..1
-    configure(b, esc::reg::fmmu0, fmmu(0x100, 1, 2, 3, 0x1000, 0, 2));  // logical bits 2..3
+    configure(a, ethercat::reg::fmmu0, fmmu(0x100, 1, 0, 1, 0x1000, 0, 2));  // logical bits 0..1
+    configure(b, ethercat::reg::fmmu0, fmmu(0x100, 1, 2, 3, 0x1000, 0, 2));  // logical bits 2..3
     FrameBuilder f;
     f.add_logical(Command::lwr, 0x100, {0b1110});
     auto payload = f.bytes();
@@ -59,7 +59,7 @@ TEST(EscFmmu, BitGranularMappingsPackSeveralSlavesIntoOneByte) {
 
 TEST(EscFmmu, ReadsIntoTheFrameOnlyTheMappedBits) {
     esc::Esc a(eeprom_image(0x05));
-    configure(a, esc::reg::fmmu0, fmmu(0x200, 1, 4, 5, 0x1100, 1, 1));
+    configure(a, ethercat::reg::fmmu0, fmmu(0x200, 1, 4, 5, 0x1100, 1, 1));
     const std::uint8_t input = 0b0110;
     a.write(0x1100, std::span<const std::uint8_t>(&input, 1));
     FrameBuilder f;
@@ -72,8 +72,8 @@ TEST(EscFmmu, ReadsIntoTheFrameOnlyTheMappedBits) {
 
 TEST(EscFmmu, RegistersCanBeMappedLikeSm1Status) {
     esc::Esc a(eeprom_image(0x05));
-    configure(a, esc::reg::sm0 + 8, {0x00, 0x11, 4, 0, 0x22, 0, 1, 0});
-    configure(a, esc::reg::fmmu0 + 32, fmmu(0x9000000, 1, 0, 0, 0x080D, 3, 1));
+    configure(a, ethercat::reg::sm0 + 8, {0x00, 0x11, 4, 0, 0x22, 0, 1, 0});
+    configure(a, ethercat::reg::fmmu0 + 32, fmmu(0x9000000, 1, 0, 0, 0x080D, 3, 1));
     const std::uint8_t reply[4] = {1, 2, 3, 4};
     a.write(0x1100, reply);
     FrameBuilder f;
@@ -86,7 +86,7 @@ TEST(EscFmmu, RegistersCanBeMappedLikeSm1Status) {
 
 TEST(EscFmmu, UnmappedLogicalAddressesDoNotCount) {
     esc::Esc a(eeprom_image(0x05));
-    configure(a, esc::reg::fmmu0, fmmu(0x100, 2, 0, 7, 0x1000, 0, 2));
+    configure(a, ethercat::reg::fmmu0, fmmu(0x100, 2, 0, 7, 0x1000, 0, 2));
     FrameBuilder f;
     f.add_logical(Command::lrw, 0x102, {1, 2});
     auto payload = f.bytes();

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 #include "sim_esc/frame_builder.hpp"
 
 namespace esi::test {
@@ -31,20 +31,20 @@ std::uint16_t send(esc::Esc& a, Command command, std::uint16_t address, std::vec
 // (the default divider: 100 us per tick).
 esc::Esc outputs_esc(std::uint8_t control) {
     esc::Esc a(eeprom_image(0x05));
-    EXPECT_EQ(send(a, Command::apwr, esc::reg::watchdog_time_process_data, {100, 0}, 0), 1);
-    EXPECT_EQ(send(a, Command::apwr, esc::reg::sm0 + 16, sm_config(0x1100, 2, control), 0), 1);
+    EXPECT_EQ(send(a, Command::apwr, ethercat::reg::watchdog_time_process_data, {100, 0}, 0), 1);
+    EXPECT_EQ(send(a, Command::apwr, ethercat::reg::sm0 + 16, sm_config(0x1100, 2, control), 0), 1);
     return a;
 }
 
-bool expired(const esc::Esc& a) { return !(a.peek8(esc::reg::watchdog_status_process_data) & 1); }
+bool expired(const esc::Esc& a) { return !(a.peek8(ethercat::reg::watchdog_status_process_data) & 1); }
 
 TEST(EscWatchdog, PowerOnValuesAreTheDatasheets) {
     esc::Esc a(eeprom_image(0x05));
-    EXPECT_EQ(a.peek16(esc::reg::watchdog_divider), 0x09C2);
-    EXPECT_EQ(a.peek16(esc::reg::watchdog_time_pdi), 1000);
-    EXPECT_EQ(a.peek16(esc::reg::watchdog_time_process_data), 1000);
+    EXPECT_EQ(a.peek16(ethercat::reg::watchdog_divider), 0x09C2);
+    EXPECT_EQ(a.peek16(ethercat::reg::watchdog_time_pdi), 1000);
+    EXPECT_EQ(a.peek16(ethercat::reg::watchdog_time_process_data), 1000);
     EXPECT_FALSE(expired(a));
-    EXPECT_EQ(a.peek8(esc::reg::watchdog_counter_process_data), 0);
+    EXPECT_EQ(a.peek8(ethercat::reg::watchdog_counter_process_data), 0);
 }
 
 TEST(EscWatchdog, WritesWithinTheTimeKeepItAliveAndSilenceExpiresIt) {
@@ -55,19 +55,19 @@ TEST(EscWatchdog, WritesWithinTheTimeKeepItAliveAndSilenceExpiresIt) {
     }
     EXPECT_EQ(send(a, Command::aprd, 0x0130, {0, 0}, 59 * ms), 1);  // 9 ms after the last write
     EXPECT_FALSE(expired(a));
-    EXPECT_EQ(a.al_event() & esc::reg::al_event_watchdog_process_data, 0u);
-    EXPECT_EQ(send(a, Command::aprd, esc::reg::watchdog_status_process_data, {0xFF, 0xFF}, 60 * ms), 1);  // 10 ms
+    EXPECT_EQ(a.al_event() & ethercat::reg::al_event_watchdog_process_data, 0u);
+    EXPECT_EQ(send(a, Command::aprd, ethercat::reg::watchdog_status_process_data, {0xFF, 0xFF}, 60 * ms), 1);  // 10 ms
     EXPECT_TRUE(expired(a));
-    EXPECT_EQ(a.peek8(esc::reg::watchdog_counter_process_data), 1);
-    EXPECT_NE(a.al_event() & esc::reg::al_event_watchdog_process_data, 0u);
+    EXPECT_EQ(a.peek8(ethercat::reg::watchdog_counter_process_data), 1);
+    EXPECT_NE(a.al_event() & ethercat::reg::al_event_watchdog_process_data, 0u);
     // An expiry is counted once, however long the silence lasts.
     EXPECT_EQ(send(a, Command::aprd, 0x0130, {0, 0}, 200 * ms), 1);
-    EXPECT_EQ(a.peek8(esc::reg::watchdog_counter_process_data), 1);
+    EXPECT_EQ(a.peek8(ethercat::reg::watchdog_counter_process_data), 1);
     // The PDI reading the status acknowledges the event; the status stays until the next write.
     std::uint8_t got[2]{};
-    a.read(esc::reg::watchdog_status_process_data, got);
+    a.read(ethercat::reg::watchdog_status_process_data, got);
     EXPECT_EQ(got[0] & 1, 0);
-    EXPECT_EQ(a.al_event() & esc::reg::al_event_watchdog_process_data, 0u);
+    EXPECT_EQ(a.al_event() & ethercat::reg::al_event_watchdog_process_data, 0u);
     EXPECT_EQ(send(a, Command::apwr, 0x1100, {3, 4}, 201 * ms), 1);
     EXPECT_FALSE(expired(a));
 }
@@ -76,7 +76,7 @@ TEST(EscWatchdog, TheExpiryShowsInTheFrameThatFindsIt) {
     esc::Esc a = outputs_esc(0x64);
     ASSERT_EQ(send(a, Command::apwr, 0x1100, {1, 2}, 1 * ms), 1);
     FrameBuilder f;
-    f.add(Command::aprd, 0, esc::reg::watchdog_status_process_data, {0xFF, 0xFF});
+    f.add(Command::aprd, 0, ethercat::reg::watchdog_status_process_data, {0xFF, 0xFF});
     auto payload = f.bytes();
     ASSERT_EQ(run(payload, {&a}, 30 * ms), esc::FrameOutcome::answered);
     EXPECT_EQ(f.data(payload, 0)[0] & 1, 0);
@@ -87,14 +87,14 @@ TEST(EscWatchdog, OnlySmsWithTheTriggerBitAreWatched) {
     ASSERT_EQ(send(a, Command::apwr, 0x1100, {1, 2}, 1 * ms), 1);
     EXPECT_EQ(send(a, Command::aprd, 0x0130, {0, 0}, 500 * ms), 1);
     EXPECT_FALSE(expired(a));
-    EXPECT_EQ(a.peek8(esc::reg::watchdog_counter_process_data), 0);
+    EXPECT_EQ(a.peek8(ethercat::reg::watchdog_counter_process_data), 0);
 }
 
 TEST(EscWatchdog, TimeZeroDisablesItAndNothingRunsBeforeTheFirstTrigger) {
     esc::Esc a = outputs_esc(0x64);
     EXPECT_EQ(send(a, Command::aprd, 0x0130, {0, 0}, 500 * ms), 1);  // never written: not started
     EXPECT_FALSE(expired(a));
-    ASSERT_EQ(send(a, Command::apwr, esc::reg::watchdog_time_process_data, {0, 0}, 501 * ms), 1);
+    ASSERT_EQ(send(a, Command::apwr, ethercat::reg::watchdog_time_process_data, {0, 0}, 501 * ms), 1);
     ASSERT_EQ(send(a, Command::apwr, 0x1100, {1, 2}, 502 * ms), 1);
     EXPECT_EQ(send(a, Command::aprd, 0x0130, {0, 0}, 900 * ms), 1);
     EXPECT_FALSE(expired(a));
@@ -104,18 +104,18 @@ TEST(EscWatchdog, WritingTheErrorCountersClearsTheExpiryCounter) {
     esc::Esc a = outputs_esc(0x64);
     ASSERT_EQ(send(a, Command::apwr, 0x1100, {1, 2}, 1 * ms), 1);
     EXPECT_EQ(send(a, Command::aprd, 0x0130, {0, 0}, 20 * ms), 1);
-    ASSERT_EQ(a.peek8(esc::reg::watchdog_counter_process_data), 1);
-    EXPECT_EQ(send(a, Command::apwr, esc::reg::error_counters, {0, 0}, 21 * ms), 1);
-    EXPECT_EQ(a.peek8(esc::reg::watchdog_counter_process_data), 0);
+    ASSERT_EQ(a.peek8(ethercat::reg::watchdog_counter_process_data), 1);
+    EXPECT_EQ(send(a, Command::apwr, ethercat::reg::error_counters, {0, 0}, 21 * ms), 1);
+    EXPECT_EQ(a.peek8(ethercat::reg::watchdog_counter_process_data), 0);
 }
 
 TEST(EscWatchdog, TheMasterCannotWriteTheStatusOrTheCounter) {
     esc::Esc a = outputs_esc(0x64);
     ASSERT_EQ(send(a, Command::apwr, 0x1100, {1, 2}, 1 * ms), 1);
     EXPECT_EQ(send(a, Command::aprd, 0x0130, {0, 0}, 20 * ms), 1);
-    EXPECT_EQ(send(a, Command::apwr, esc::reg::watchdog_status_process_data, {1, 0, 0}, 21 * ms), 1);
+    EXPECT_EQ(send(a, Command::apwr, ethercat::reg::watchdog_status_process_data, {1, 0, 0}, 21 * ms), 1);
     EXPECT_TRUE(expired(a));
-    EXPECT_EQ(a.peek8(esc::reg::watchdog_counter_process_data), 1);
+    EXPECT_EQ(a.peek8(ethercat::reg::watchdog_counter_process_data), 1);
 }
 
 }  // namespace

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 #include "sim_esc/frame_builder.hpp"
 
 namespace esi::test {
@@ -12,7 +12,7 @@ using esc::Command;
 
 std::vector<std::uint8_t> station_write() {
     FrameBuilder f;
-    f.add(Command::apwr, 0, esc::reg::station_address, {0x01, 0x10});
+    f.add(Command::apwr, 0, ethercat::reg::station_address, {0x01, 0x10});
     return f.bytes();
 }
 
@@ -23,7 +23,7 @@ TEST(EscFrame, ShortFramesAreDropped) {
         payload.resize(n);
         EXPECT_EQ(run(payload, {&a}), esc::FrameOutcome::malformed) << n;
     }
-    EXPECT_EQ(a.peek16(esc::reg::station_address), 0);
+    EXPECT_EQ(a.peek16(ethercat::reg::station_address), 0);
 }
 
 TEST(EscFrame, ADatagramLengthPastTheFrameIsDropped) {
@@ -32,7 +32,7 @@ TEST(EscFrame, ADatagramLengthPastTheFrameIsDropped) {
     payload[2 + 6] = 0xFF;  // data length 0x7FF
     payload[2 + 7] = 0x07;
     EXPECT_EQ(run(payload, {&a}), esc::FrameOutcome::malformed);
-    EXPECT_EQ(a.peek16(esc::reg::station_address), 0);
+    EXPECT_EQ(a.peek16(ethercat::reg::station_address), 0);
 }
 
 TEST(EscFrame, AHeaderLengthPastThePayloadIsDropped) {
@@ -47,7 +47,7 @@ TEST(EscFrame, AMoreBitWithoutAFollowingDatagramIsDropped) {
     auto payload = station_write();
     payload[2 + 7] |= 0x80;
     EXPECT_EQ(run(payload, {&a}), esc::FrameOutcome::malformed);
-    EXPECT_EQ(a.peek16(esc::reg::station_address), 0);
+    EXPECT_EQ(a.peek16(ethercat::reg::station_address), 0);
 }
 
 TEST(EscFrame, OnlyTypeOneFramesAreProcessed) {
@@ -62,13 +62,13 @@ TEST(EscFrame, EthernetPaddingAfterTheDatagramsIsAccepted) {
     auto payload = station_write();
     payload.resize(46, 0);
     EXPECT_EQ(run(payload, {&a}), esc::FrameOutcome::answered);
-    EXPECT_EQ(a.peek16(esc::reg::station_address), 0x1001);
+    EXPECT_EQ(a.peek16(ethercat::reg::station_address), 0x1001);
 }
 
 TEST(EscFrame, ACirculatingFrameIsDestroyedAtAClosedPort0) {
     esc::Esc a(eeprom_image(0x05));
     FrameBuilder close;
-    close.add(Command::bwr, 0, esc::reg::dl_port, {0x03});
+    close.add(Command::bwr, 0, ethercat::reg::dl_port, {0x03});
     auto payload = close.bytes();
     ASSERT_EQ(run(payload, {&a}), esc::FrameOutcome::answered);
     auto again = station_write();

@@ -7,7 +7,7 @@
 
 #include <random>
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 #include "sim_esc/frame_builder.hpp"
 
 namespace esi::test {
@@ -20,8 +20,8 @@ class EchoStack final : public esc::SlaveStack {
 public:
     void poll(esc::Pdi& pdi) override {
         std::uint8_t control[2]{};
-        pdi.read(esc::reg::al_control, control);
-        pdi.write(esc::reg::al_status, std::span<const std::uint8_t>(control, 1));
+        pdi.read(ethercat::reg::al_control, control);
+        pdi.write(ethercat::reg::al_status, std::span<const std::uint8_t>(control, 1));
         std::uint8_t mailbox[16]{};
         pdi.read(0x1000, mailbox);
         pdi.write(0x1080, mailbox);
@@ -35,7 +35,7 @@ TEST(HostileFrames, RandomAndMutatedFramesNeverCrashOrResizeTheFrame) {
     esc::Esc a(eeprom_image(0x05)), b(eeprom_image(0x05));
     EchoStack stack;
     FrameBuilder setup;
-    setup.add(Command::bwr, 0, esc::reg::sm0,
+    setup.add(Command::bwr, 0, ethercat::reg::sm0,
               {0x00, 0x10, 16, 0, 0x26, 0, 1, 0, 0x80, 0x10, 16, 0, 0x22, 0, 1, 0, 0x00, 0x11, 4, 0, 0x64, 0, 1, 0});
     auto payload = setup.bytes();
     ASSERT_EQ(run(payload, {&a, &b}), esc::FrameOutcome::answered);
@@ -43,7 +43,7 @@ TEST(HostileFrames, RandomAndMutatedFramesNeverCrashOrResizeTheFrame) {
     FrameBuilder valid;
     valid.add(Command::fpwr, 0, 0x1000, std::vector<std::uint8_t>(16, 0x11));
     valid.add(Command::lrw, 0, 0, std::vector<std::uint8_t>(8, 0));
-    valid.add(Command::apwr, 0, esc::reg::eeprom_control, {0x01, 0x02, 0x00, 0x10, 0x00, 0x00});
+    valid.add(Command::apwr, 0, ethercat::reg::eeprom_control, {0x01, 0x02, 0x00, 0x10, 0x00, 0x00});
     valid.add(Command::brw, 0, 0x0600, std::vector<std::uint8_t>(32, 0xFF));
     const auto template_frame = valid.bytes();
 

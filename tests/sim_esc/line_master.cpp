@@ -3,14 +3,14 @@
 #include <algorithm>
 
 #include "esi/esc/frame.hpp"
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 #include "esi/sii/image.hpp"
 
 namespace esi::test {
 
 namespace {
 
-namespace reg = esc::reg;
+namespace reg = ethercat::reg;
 using esc::Command;
 
 std::uint16_t u16(const std::vector<std::uint8_t>& b, std::size_t at) {

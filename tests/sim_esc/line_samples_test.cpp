@@ -7,7 +7,7 @@
 
 #include <algorithm>
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 #include "sim_esc/line_master.hpp"
 #include "sim_esc/line_session.hpp"
 #include "support/test_support.hpp"
@@ -15,7 +15,7 @@
 namespace esi::test {
 namespace {
 
-namespace reg = esc::reg;
+namespace reg = ethercat::reg;
 
 // The output image of cycle `c`: a pattern that differs per cycle and per byte.
 std::vector<std::uint8_t> pattern(std::uint32_t bytes, unsigned c) {

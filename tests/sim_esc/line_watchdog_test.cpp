@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 #include "sim_esc/line_master.hpp"
 #include "sim_esc/line_session.hpp"
 #include "support/test_support.hpp"
@@ -12,7 +12,7 @@
 namespace esi::test {
 namespace {
 
-namespace reg = esc::reg;
+namespace reg = ethercat::reg;
 constexpr std::uint64_t ms = 1'000'000;
 
 TEST(LineWatchdog, StoppingTheCycleExpiresItAndCyclingKeepsItAlive) {

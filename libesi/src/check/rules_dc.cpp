@@ -12,15 +12,17 @@
 #include "check/rule_cache.hpp"
 #include "check/queries.hpp"
 #include "check/source_edit.hpp"
+#include "esi/ethercat/dc.hpp"
 #include "esi/number.hpp"
 
 namespace esi::rules {
 
 namespace {
 
-constexpr std::uint32_t activate_cyclic = 0x0100;
-constexpr std::uint32_t activate_sync0 = 0x0200;
-constexpr std::uint32_t activate_sync1 = 0x0400;
+// AssignActivate's activation bits (0x0981 in its high byte): the protocol layer's.
+constexpr std::uint32_t activate_cyclic = ethercat::assign_activate::cyclic_operation;
+constexpr std::uint32_t activate_sync0 = ethercat::assign_activate::sync0;
+constexpr std::uint32_t activate_sync1 = ethercat::assign_activate::sync1;
 
 std::string op_mode_label(const DcOpMode& mode) {
     return mode.name.empty() ? std::string("OpMode") : "OpMode '" + mode.name + "'";

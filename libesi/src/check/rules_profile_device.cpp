@@ -9,6 +9,7 @@
 
 #include "check/areas.hpp"
 #include "check/od_text.hpp"
+#include "esi/ethercat/dc.hpp"
 
 namespace esi::rules {
 
@@ -313,8 +314,8 @@ constexpr Rule profile_parameter_index{
 
 // ---- profile-sync0-cycle --------------------------------------------------------------------
 
-// AssignActivate bits 8 (cyclic unit) and 9 (SYNC0) in ESC register 0x0981.
-constexpr std::uint32_t activate_sync0 = 0x0300;
+// AssignActivate bits 8 (cyclic operation) and 9 (SYNC0), ESC register 0x0981.
+constexpr std::uint32_t activate_cyclic_sync0 = ethercat::assign_activate::sync0_cyclic;
 
 std::string factors_text(const std::vector<std::int32_t>& factors) {
     std::string out;
@@ -327,7 +328,7 @@ void check_sync0_cycle(const EsiDocument& document, RuleContext& context) {
         if (!limits.sync0_cycle || !device.dc) return;
         const Sync0CycleRule& rule = *limits.sync0_cycle;
         for (const auto& mode : device.dc->op_modes) {
-            if (!mode.has_assign_activate || (mode.assign_activate & activate_sync0) != activate_sync0 || !mode.cycle_time_sync0)
+            if (!mode.has_assign_activate || (mode.assign_activate & activate_cyclic_sync0) != activate_cyclic_sync0 || !mode.cycle_time_sync0)
                 continue;
             const DcTime& t = *mode.cycle_time_sync0;
             const SourcePos at = first_known({t.pos, mode.pos});

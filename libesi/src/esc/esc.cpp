@@ -6,9 +6,11 @@
 #include <algorithm>
 #include <cstring>
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 
 namespace esi::esc {
+
+namespace reg = ethercat::reg;
 
 namespace {
 
@@ -112,15 +114,17 @@ std::uint8_t Esc::write_mask(Side side, std::uint32_t a) const {
         switch (a) {
         case reg::station_address: case reg::station_address + 1:
         case reg::dl_control: case reg::dl_control + 1: case reg::dl_control + 2: case reg::dl_control + 3:
-        case 0x0108: case 0x0109:
+        case reg::physical_rw_offset: case reg::physical_rw_offset + 1:
         case reg::al_control: case reg::al_control + 1:
         case reg::ecat_event_mask: case reg::ecat_event_mask + 1:
         case reg::watchdog_divider: case reg::watchdog_divider + 1:
-        case 0x0410: case 0x0411: case 0x0420: case 0x0421:
+        case reg::watchdog_time_pdi: case reg::watchdog_time_pdi + 1:
+        case reg::watchdog_time_process_data: case reg::watchdog_time_process_data + 1:
         case reg::eeprom_configuration:
         case reg::eeprom_address: case reg::eeprom_address + 1: case reg::eeprom_address + 2: case reg::eeprom_address + 3:
         case reg::eeprom_data: case reg::eeprom_data + 1:
-        case 0x0510: case 0x0511: case 0x0512: case 0x0513: case 0x0514: case 0x0515:
+        case reg::mii_management: case reg::mii_management + 1: case reg::mii_management + 2:
+        case reg::mii_management + 3: case reg::mii_management + 4: case reg::mii_management + 5:
         case reg::dc_cyclic_unit_control: case reg::dc_sync_activation:
             return 0xFF;
         case reg::eeprom_control: return 0x01;       // write enable

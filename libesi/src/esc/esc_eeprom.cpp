@@ -6,9 +6,11 @@
 
 #include "esi/config_crc.hpp"
 #include "esi/esc/esc.hpp"
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 
 namespace esi::esc {
+
+namespace reg = ethercat::reg;
 
 void Esc::load_eeprom() {
     // Bytes past the image read as an erased EEPROM (0xFF): a truncated image fails the

@@ -7,9 +7,11 @@
 #include <vector>
 
 #include "esi/esc/esc.hpp"
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 
 namespace esi::esc {
+
+namespace reg = ethercat::reg;
 
 namespace {
 

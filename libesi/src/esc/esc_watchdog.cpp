@@ -12,9 +12,11 @@
 
 #include "esi/esc/esc.hpp"
 
-#include "esi/esc/registers.hpp"
+#include "esi/ethercat/registers.hpp"
 
 namespace esi::esc {
+
+namespace reg = ethercat::reg;
 
 namespace {
 

@@ -2,7 +2,11 @@
 
 #include "esi/esc/frame.hpp"
 
+#include "esi/ethercat/registers.hpp"
+
 namespace esi::esc {
+
+namespace reg = ethercat::reg;
 
 namespace {
 
@@ -47,7 +51,7 @@ FrameOutcome pass_frame(std::span<std::uint8_t> payload, std::span<Esc* const> l
 
     // How far the frame travels decides when it comes back through each port 1.
     std::size_t reached = 0;
-    while (reached + 1 < line.size() && ((line[reached]->peek8(0x0101) >> 2) & 0x03) != 0x03) ++reached;
+    while (reached + 1 < line.size() && ((line[reached]->peek8(reg::dl_port) >> 2) & 0x03) != 0x03) ++reached;
     const std::uint64_t turn = timing.time_ns + 2ull * reached * timing.hop_ns;
 
     for (std::size_t i = 0; i < line.size(); ++i) {
@@ -82,7 +86,7 @@ FrameOutcome pass_frame(std::span<std::uint8_t> payload, std::span<Esc* const> l
         }
         if (!esc.forwards_to_port1()) {
             // Loop forced open without a next slave: the frame leaves into nothing.
-            const unsigned loop = (esc.peek8(0x0101) >> 2) & 0x03;
+            const unsigned loop = (esc.peek8(reg::dl_port) >> 2) & 0x03;
             if (loop == 0x02 && !pass.port1_link) return FrameOutcome::lost;
             break;
         }

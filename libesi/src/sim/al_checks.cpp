@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "esi/ethercat/dc.hpp"
 #include "esi/sii/build.hpp"
 #include "esi/sii/layout.hpp"
 #include "sim/al_registers.hpp"
@@ -112,13 +113,15 @@ std::uint16_t check_process_sm(esc::Pdi& pdi, const SmExpectation& sm, std::uint
 }
 
 std::uint16_t check_dc(esc::Pdi& pdi, const std::vector<std::uint16_t>& assign_activate) {
-    // 0x0981 bit 0: cyclic operation, bit 1: SYNC0, bit 2: SYNC1 (AssignActivate's high byte).
-    const std::uint16_t activation = reg::read_u16(pdi, reg::dc_activation) & 0x0700;
+    // The activation bits of 0x0981 as AssignActivate's high byte carries them.
+    namespace aa = ethercat::assign_activate;
+    constexpr std::uint16_t activation_bits = aa::cyclic_operation | aa::sync0 | aa::sync1;
+    const std::uint16_t activation = reg::read_u16(pdi, reg::dc_cyclic_unit_control) & activation_bits;
     if (activation == 0) return al_code::none;
     const bool supported = std::any_of(assign_activate.begin(), assign_activate.end(),
-                                       [&](std::uint16_t a) { return (a & 0x0700) == activation; });
+                                       [&](std::uint16_t a) { return (a & activation_bits) == activation; });
     if (!supported) return al_code::invalid_dc_sync_configuration;
-    if ((activation & 0x0200) && reg::read_u32(pdi, reg::dc_sync0_cycle) == 0) return al_code::invalid_sync_cycle_time;
+    if ((activation & aa::sync0) && reg::read_u32(pdi, reg::dc_sync0_cycle) == 0) return al_code::invalid_sync_cycle_time;
     return al_code::none;
 }
 

@@ -1,33 +1,17 @@
 #pragma once
-// The ESC registers the slave stack uses through the PDI (ESC datasheet section II) and small
-// helpers to read and write them little-endian.
+// Small helpers with which the slave stack reads and writes the ESC's registers through the PDI,
+// little-endian; the registers are named in the protocol layer (esi/ethercat/registers.hpp).
 
 #include <array>
 #include <cstdint>
 
 #include "esi/esc/pdi.hpp"
+#include "esi/ethercat/registers.hpp"
 
 namespace esi::sim::reg {
 
-inline constexpr std::uint16_t station_alias = 0x0012;
-inline constexpr std::uint16_t al_control = 0x0120;
-inline constexpr std::uint16_t al_status = 0x0130;
-inline constexpr std::uint16_t al_status_code = 0x0134;
-inline constexpr std::uint16_t al_event_request = 0x0220;
-inline constexpr std::uint16_t watchdog_status_process_data = 0x0440;  // bit 0: 0 expired
-inline constexpr std::uint16_t dc_activation = 0x0980;  // cyclic unit control (0x0980) and activation (0x0981)
-inline constexpr std::uint16_t dc_sync0_cycle = 0x09A0;
-
-// SyncManager n: 8 bytes from 0x0800 + 8n.
-[[nodiscard]] constexpr std::uint16_t sm(std::uint32_t n) { return static_cast<std::uint16_t>(0x0800 + 8 * n); }
-inline constexpr std::uint16_t sm_start = 0, sm_length = 2, sm_control = 4, sm_status = 5, sm_activate = 6, sm_pdi_control = 7;
-inline constexpr std::uint8_t sm_status_mailbox_full = 0x08;
-inline constexpr std::uint8_t sm_activate_enable = 0x01;
-inline constexpr std::uint8_t sm_activate_repeat = 0x02;
-inline constexpr std::uint8_t sm_pdi_repeat_ack = 0x02;
-
-inline constexpr std::uint32_t al_event_control = 0x0001;
-inline constexpr std::uint32_t al_event_watchdog_process_data = 0x0040;
+// The register map is the protocol layer's (esi/ethercat/registers.hpp).
+using namespace ethercat::reg;
 
 [[nodiscard]] inline std::uint8_t read_u8(esc::Pdi& pdi, std::uint16_t address) {
     std::array<std::uint8_t, 1> b{};

@@ -8,26 +8,16 @@ namespace esi::sim {
 
 namespace {
 
-constexpr std::uint16_t control_state_mask = 0x000F;
-constexpr std::uint16_t control_acknowledge = 0x0010;
+constexpr std::uint16_t control_state_mask = ethercat::al_state_mask;
+constexpr std::uint16_t control_acknowledge = ethercat::al_error_bit;
 constexpr std::uint16_t control_identify = 0x0020;
-constexpr std::uint16_t status_error = 0x0010;
+constexpr std::uint16_t status_error = ethercat::al_error_bit;
 constexpr std::uint16_t status_id_loaded = 0x0020;
 
-bool is_state(std::uint16_t code) { return code == 1 || code == 2 || code == 3 || code == 4 || code == 8; }
+bool is_state(std::uint16_t code) { return ethercat::al_state_from_bits(code).has_value() && code <= control_state_mask; }
 
 // ETG.1000.6 Table 10: the transitions a slave accepts (besides staying where it is).
-bool transition_exists(AlState from, AlState to) {
-    if (to == AlState::init) return true;
-    switch (from) {
-        case AlState::init: return to == AlState::preop || to == AlState::boot;
-        case AlState::preop: return to == AlState::safeop;
-        case AlState::safeop: return to == AlState::preop || to == AlState::op;
-        case AlState::op: return to == AlState::preop || to == AlState::safeop;
-        case AlState::boot: return false;
-    }
-    return false;
-}
+bool transition_exists(AlState from, AlState to) { return ethercat::is_state_machine_transition({from, to}); }
 
 }  // namespace
 
@@ -68,7 +58,7 @@ void AlStateMachine::poll(esc::Pdi& pdi, AlTransitions& device) {
         started_ = true;
         write_status(pdi, false);
     }
-    if (!(reg::read_u32(pdi, reg::al_event_request) & reg::al_event_control)) return;
+    if (!(reg::read_u32(pdi, reg::al_event_request) & reg::al_event_al_control)) return;
     const std::uint16_t control = reg::read_u16(pdi, reg::al_control);  // clears the event
     const std::uint16_t requested = control & control_state_mask;
     const bool acknowledge = (control & control_acknowledge) != 0;

@@ -11,24 +11,13 @@
 #include <cstdint>
 
 #include "esi/esc/pdi.hpp"
+#include "esi/ethercat/al_state.hpp"
 #include "sim/coe_dictionary.hpp"
 
 namespace esi::sim {
 
-// AL status codes (ETG.1000.6 Table 11) the machine itself gives.
-namespace al_code {
-inline constexpr std::uint16_t none = 0x0000;
-inline constexpr std::uint16_t invalid_state_change = 0x0011;
-inline constexpr std::uint16_t unknown_state = 0x0012;
-inline constexpr std::uint16_t bootstrap_not_supported = 0x0013;
-inline constexpr std::uint16_t invalid_mailbox_configuration = 0x0016;
-inline constexpr std::uint16_t invalid_sm_configuration = 0x0017;
-inline constexpr std::uint16_t sm_watchdog = 0x001B;
-inline constexpr std::uint16_t invalid_output_configuration = 0x001D;
-inline constexpr std::uint16_t invalid_input_configuration = 0x001E;
-inline constexpr std::uint16_t invalid_dc_sync_configuration = 0x0030;
-inline constexpr std::uint16_t invalid_sync_cycle_time = 0x0035;
-}  // namespace al_code
+// AL status codes (ETG.1000.6 Table 11): the protocol layer's.
+namespace al_code = ethercat::al_code;
 
 class AlTransitions {
 public:

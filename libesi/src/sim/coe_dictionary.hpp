@@ -8,11 +8,12 @@
 #include <vector>
 
 #include "esi/data_types.hpp"
+#include "esi/ethercat/al_state.hpp"
 
 namespace esi::sim {
 
-// AL states as the AL control and status registers code them (ETG.1000.6 Table 9).
-enum class AlState : std::uint8_t { init = 1, preop = 2, boot = 3, safeop = 4, op = 8 };
+// AL states as the AL control and status registers code them: the protocol layer's.
+using AlState = ethercat::AlState;
 
 // Object access bits of an SDO Information entry description (ETG.1000.6 5.6.3.6.3).
 namespace access_bit {

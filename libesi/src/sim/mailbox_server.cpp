@@ -2,14 +2,14 @@
 
 #include "sim/mailbox_server.hpp"
 
+#include "esi/ethercat/mailbox.hpp"
 #include "sim/al_registers.hpp"
-#include "sim/mailbox_error.hpp"
 
 namespace esi::sim {
 
 namespace {
 
-constexpr std::size_t header_bytes = 6;
+constexpr std::size_t header_bytes = ethercat::mailbox_header_bytes;
 
 }  // namespace
 
@@ -68,7 +68,7 @@ void MailboxServer::handle(const std::vector<std::uint8_t>& request, AlState sta
     const std::uint8_t type = request[5] & 0x0F;
     const std::uint8_t counter = (request[5] >> 4) & 0x07;
     if (length + header_bytes > request.size()) {
-        send_error(mailbox_error::invalid_size);
+        send_error(ethercat::mailbox_error::invalid_size);
         return;
     }
     // ETG.1000.6 5.5.1: a counter equal to the previous request's marks a request the master
@@ -76,7 +76,7 @@ void MailboxServer::handle(const std::vector<std::uint8_t>& request, AlState sta
     if (counter != 0 && counter == last_request_counter_) return;
     last_request_counter_ = counter;
     if (type != mailbox_type::coe || !coe_) {
-        send_error(type == mailbox_type::error ? mailbox_error::syntax : mailbox_error::unsupported_protocol);
+        send_error(type == mailbox_type::error ? ethercat::mailbox_error::syntax : ethercat::mailbox_error::unsupported_protocol);
         return;
     }
     const std::span<const std::uint8_t> body(request.data() + header_bytes, length);

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "sim/sdo_abort.hpp"
+#include "esi/ethercat/mailbox.hpp"
 
 namespace esi::sim {
 
@@ -30,11 +30,11 @@ bool is_pdo_object(std::uint32_t index) { return is_rx_mapping(index) || is_tx_m
 bool is_gap(std::uint32_t index) { return index == 0 || (index >= 0x0001 && index <= 0x0007); }
 
 std::uint32_t read_refusal(const CoeEntry& entry) {
-    return entry.readable_somewhere() ? sdo_abort::device_state : sdo_abort::write_only;
+    return entry.readable_somewhere() ? ethercat::sdo_abort::device_state : ethercat::sdo_abort::write_only;
 }
 
 std::uint32_t write_refusal(const CoeEntry& entry) {
-    return entry.writable_somewhere() ? sdo_abort::device_state : sdo_abort::read_only;
+    return entry.writable_somewhere() ? ethercat::sdo_abort::device_state : ethercat::sdo_abort::read_only;
 }
 
 }  // namespace
@@ -42,16 +42,16 @@ std::uint32_t write_refusal(const CoeEntry& entry) {
 std::uint32_t ObjectAccess::read(std::uint16_t index, std::uint8_t subindex, bool complete, AlState state,
                                  std::vector<std::uint8_t>& out) const {
     const CoeObject* object = dictionary_.find(index);
-    if (!object) return sdo_abort::object_missing;
+    if (!object) return ethercat::sdo_abort::object_missing;
     if (!complete) {
         const CoeEntry* entry = object->entry(subindex);
-        if (!entry) return sdo_abort::subindex_missing;
+        if (!entry) return ethercat::sdo_abort::subindex_missing;
         if (!entry->readable(state)) return read_refusal(*entry);
         out = entry->value;
-        return sdo_abort::none;
+        return ethercat::sdo_abort::none;
     }
-    if (!rules_.complete_access) return sdo_abort::no_complete_access;
-    if (subindex > 1) return sdo_abort::unsupported_access;
+    if (!rules_.complete_access) return ethercat::sdo_abort::no_complete_access;
+    if (subindex > 1) return ethercat::sdo_abort::unsupported_access;
     const std::uint32_t bits = object->complete_bits(subindex);
     out.assign((bits + 7u) / 8u, 0);
     bool base_known = false;
@@ -65,7 +65,7 @@ std::uint32_t ObjectAccess::read(std::uint16_t index, std::uint8_t subindex, boo
         if (e.value.size() * 8u < e.bit_size || at + e.bit_size > out.size() * 8u) continue;
         copy_bits(e.value.data(), 0, out.data(), at, e.bit_size);
     }
-    return sdo_abort::none;
+    return ethercat::sdo_abort::none;
 }
 
 std::size_t ObjectAccess::write_limit(std::uint16_t index, std::uint8_t subindex, bool complete) const {
@@ -79,17 +79,17 @@ std::size_t ObjectAccess::write_limit(std::uint16_t index, std::uint8_t subindex
 std::uint32_t ObjectAccess::write(std::uint16_t index, std::uint8_t subindex, bool complete, AlState state,
                                   std::span<const std::uint8_t> data) {
     CoeObject* object = dictionary_.find(index);
-    if (!object) return sdo_abort::object_missing;
+    if (!object) return ethercat::sdo_abort::object_missing;
     if (!complete) {
         CoeEntry* entry = object->entry(subindex);
-        if (!entry) return sdo_abort::subindex_missing;
+        if (!entry) return ethercat::sdo_abort::subindex_missing;
         return write_entry(*object, *entry, state, data, true);
     }
-    if (!rules_.complete_access) return sdo_abort::no_complete_access;
-    if (subindex > 1) return sdo_abort::unsupported_access;
+    if (!rules_.complete_access) return ethercat::sdo_abort::no_complete_access;
+    if (subindex > 1) return ethercat::sdo_abort::unsupported_access;
     const std::size_t limit = write_limit(index, subindex, true);
-    if (data.size() > limit) return sdo_abort::length_too_long;
-    if (is_pdo_object(index) && state != AlState::preop) return sdo_abort::device_state;
+    if (data.size() > limit) return ethercat::sdo_abort::length_too_long;
+    if (is_pdo_object(index) && state != AlState::preop) return ethercat::sdo_abort::device_state;
 
     // The whole object is written or nothing: keep the values to restore on a refusal.
     std::vector<std::vector<std::uint8_t>> saved;
@@ -125,7 +125,7 @@ std::uint32_t ObjectAccess::write(std::uint16_t index, std::uint8_t subindex, bo
             return restore(write_refusal(e));
         }
         const std::uint32_t code = write_entry(*object, e, state, bytes, false);
-        if (code != sdo_abort::none) return restore(code);
+        if (code != ethercat::sdo_abort::none) return restore(code);
     }
     if (sub0) {
         const std::uint8_t count = new_count ? *new_count : static_cast<std::uint8_t>(saved.front().empty() ? 0 : saved.front()[0]);
@@ -134,10 +134,10 @@ std::uint32_t ObjectAccess::write(std::uint16_t index, std::uint8_t subindex, bo
             std::vector<std::uint8_t> value = bytes;
             value[0] = count;
             const std::uint32_t code = write_entry(*object, *sub0, state, value, false);
-            if (code != sdo_abort::none) return restore(code);
+            if (code != ethercat::sdo_abort::none) return restore(code);
         }
     }
-    return sdo_abort::none;
+    return ethercat::sdo_abort::none;
 }
 
 std::uint32_t ObjectAccess::write_entry(CoeObject& object, CoeEntry& entry, AlState state, std::span<const std::uint8_t> data,
@@ -147,37 +147,37 @@ std::uint32_t ObjectAccess::write_entry(CoeObject& object, CoeEntry& entry, AlSt
         // A PDO object's sub-index 0 is writable in PREOP only, whatever its flags say of other states.
         if (!(pdo_object && entry.writable(AlState::preop))) return write_refusal(entry);
     }
-    if (pdo_object && state != AlState::preop) return sdo_abort::device_state;
+    if (pdo_object && state != AlState::preop) return ethercat::sdo_abort::device_state;
     const std::size_t size = entry.byte_size();
-    if (data.size() > size) return sdo_abort::length_too_long;
-    if (data.size() < size && !entry.variable_length()) return sdo_abort::length_too_short;
+    if (data.size() > size) return ethercat::sdo_abort::length_too_long;
+    if (data.size() < size && !entry.variable_length()) return ethercat::sdo_abort::length_too_short;
     std::vector<std::uint8_t> value(size, 0);
     std::copy(data.begin(), data.end(), value.begin());
     if (pdo_object) {
         CoeEntry probe = entry;
         probe.value = value;
         const std::uint32_t code = check_pdo_object_write(object, entry, probe.unsigned_value());
-        if (code != sdo_abort::none) return code;
+        if (code != ethercat::sdo_abort::none) return code;
     }
     entry.value = std::move(value);
-    return sdo_abort::none;
+    return ethercat::sdo_abort::none;
 }
 
 std::uint32_t ObjectAccess::check_pdo_object_write(const CoeObject& object, const CoeEntry& entry, std::uint64_t value) const {
     const CoeEntry* sub0 = object.entry(0);
     if (entry.subindex != 0) {
-        if (sub0 && sub0->unsigned_value() != 0) return sdo_abort::subindex_0_not_zero;
+        if (sub0 && sub0->unsigned_value() != 0) return ethercat::sdo_abort::subindex_0_not_zero;
         if (is_assignment(object.index)) {
             const std::uint32_t sm = object.index - 0x1C10u;
             const SmRole role = sm < rules_.sm_roles.size() ? rules_.sm_roles[sm] : SmRole::unused;
             const bool ok = value == 0 || (role == SmRole::outputs && is_rx_mapping(static_cast<std::uint32_t>(value))) ||
                             (role == SmRole::inputs && is_tx_mapping(static_cast<std::uint32_t>(value)));
-            if (!ok || (value != 0 && !dictionary_.find(static_cast<std::uint32_t>(value)))) return sdo_abort::value_range;
-            return sdo_abort::none;
+            if (!ok || (value != 0 && !dictionary_.find(static_cast<std::uint32_t>(value)))) return ethercat::sdo_abort::value_range;
+            return ethercat::sdo_abort::none;
         }
         return check_mapping_entry(object.index, static_cast<std::uint32_t>(value));
     }
-    if (value > object.max_subindex()) return sdo_abort::value_too_high;
+    if (value > object.max_subindex()) return ethercat::sdo_abort::value_too_high;
     const auto count = static_cast<std::uint8_t>(value);
     return is_assignment(object.index) ? check_assignment_complete(object, count) : check_mapping_complete(object, count);
 }
@@ -186,22 +186,22 @@ std::uint32_t ObjectAccess::check_mapping_entry(std::uint16_t mapping_index, std
     const std::uint32_t index = mapped >> 16;
     const std::uint32_t subindex = (mapped >> 8) & 0xFFu;
     const std::uint32_t bits = mapped & 0xFFu;
-    if (is_gap(index)) return sdo_abort::none;
+    if (is_gap(index)) return ethercat::sdo_abort::none;
     const CoeObject* target = dictionary_.find(index);
     const CoeEntry* e = target ? target->entry(subindex) : nullptr;
-    if (!e) return sdo_abort::not_mappable;
+    if (!e) return ethercat::sdo_abort::not_mappable;
     const std::uint16_t needed = is_rx_mapping(mapping_index) ? access_bit::rx_mappable : access_bit::tx_mappable;
-    if (!(e->access & needed) || e->bit_size != bits) return sdo_abort::not_mappable;
-    return sdo_abort::none;
+    if (!(e->access & needed) || e->bit_size != bits) return ethercat::sdo_abort::not_mappable;
+    return ethercat::sdo_abort::none;
 }
 
 std::uint32_t ObjectAccess::check_mapping_complete(const CoeObject& mapping, std::uint8_t count) const {
     std::uint64_t bits = 0;
     for (std::uint32_t i = 1; i <= count; ++i) {
         const CoeEntry* e = mapping.entry(i);
-        if (!e) return sdo_abort::value_too_high;
+        if (!e) return ethercat::sdo_abort::value_too_high;
         const auto mapped = static_cast<std::uint32_t>(e->unsigned_value());
-        if (const std::uint32_t code = check_mapping_entry(mapping.index, mapped); code != sdo_abort::none) return code;
+        if (const std::uint32_t code = check_mapping_entry(mapping.index, mapped); code != ethercat::sdo_abort::none) return code;
         bits += mapped & 0xFFu;
     }
     // The PDO must fit the SM it is assigned to (or could be: the first SM of its direction).
@@ -209,8 +209,8 @@ std::uint32_t ObjectAccess::check_mapping_complete(const CoeObject& mapping, std
     std::uint32_t limit = 0;
     for (std::size_t sm = 0; sm < rules_.sm_roles.size(); ++sm)
         if (rules_.sm_roles[sm] == role && sm < rules_.sm_max_bits.size()) limit = std::max(limit, rules_.sm_max_bits[sm]);
-    if (bits > limit) return sdo_abort::pdo_length_exceeded;
-    return sdo_abort::none;
+    if (bits > limit) return ethercat::sdo_abort::pdo_length_exceeded;
+    return ethercat::sdo_abort::none;
 }
 
 std::uint32_t ObjectAccess::check_assignment_complete(const CoeObject& assignment, std::uint8_t count) const {
@@ -218,15 +218,15 @@ std::uint32_t ObjectAccess::check_assignment_complete(const CoeObject& assignmen
     std::uint64_t bits = 0;
     for (std::uint32_t i = 1; i <= count; ++i) {
         const CoeEntry* e = assignment.entry(i);
-        if (!e) return sdo_abort::value_too_high;
+        if (!e) return ethercat::sdo_abort::value_too_high;
         const CoeObject* mapping = dictionary_.find(static_cast<std::uint32_t>(e->unsigned_value()));
-        if (!mapping) return sdo_abort::value_range;
+        if (!mapping) return ethercat::sdo_abort::value_range;
         const CoeEntry* mapping_count = mapping->entry(0);
         bits += mapped_bits(*mapping, mapping_count ? static_cast<std::uint8_t>(mapping_count->unsigned_value()) : 0);
     }
     const std::uint32_t limit = sm < rules_.sm_max_bits.size() ? rules_.sm_max_bits[sm] : 0;
-    if (bits > limit) return sdo_abort::pdo_length_exceeded;
-    return sdo_abort::none;
+    if (bits > limit) return ethercat::sdo_abort::pdo_length_exceeded;
+    return ethercat::sdo_abort::none;
 }
 
 }  // namespace esi::sim

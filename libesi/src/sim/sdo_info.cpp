@@ -5,19 +5,14 @@
 
 #include <algorithm>
 
-#include "sim/sdo_abort.hpp"
+#include "esi/ethercat/mailbox.hpp"
 
 namespace esi::sim {
 
 namespace {
 
-constexpr std::uint8_t get_od_list = 0x01;
-constexpr std::uint8_t od_list_response = 0x02;
-constexpr std::uint8_t get_object_description = 0x03;
-constexpr std::uint8_t object_description_response = 0x04;
-constexpr std::uint8_t get_entry_description = 0x05;
-constexpr std::uint8_t entry_description_response = 0x06;
-constexpr std::uint8_t info_error = 0x07;
+namespace op = ethercat::sdo_info_opcode;
+
 constexpr std::size_t header_bytes = 4;
 // Value info bits a request may set for optional data (ETG.1000.6 Table 47); only the default
 // value is sent, the others are left out and cleared in the response.
@@ -51,7 +46,7 @@ std::vector<std::vector<std::uint8_t>> fragments(std::uint8_t opcode, const std:
 }
 
 std::vector<std::vector<std::uint8_t>> error(std::uint32_t code) {
-    std::vector<std::uint8_t> f{info_error, 0, 0, 0};
+    std::vector<std::uint8_t> f{op::error, 0, 0, 0};
     for (int i = 0; i < 4; ++i) f.push_back(static_cast<std::uint8_t>(code >> (8 * i)));
     return {std::move(f)};
 }
@@ -74,10 +69,10 @@ std::vector<std::vector<std::uint8_t>> sdo_info_response(const CoeDictionary& di
     if (request.size() < header_bytes) return error(0x05040001);
     const std::uint8_t opcode = request[0] & 0x7F;
     const std::span<const std::uint8_t> data = request.subspan(header_bytes);
-    if (opcode == get_od_list) {
-        if (data.size() < 2) return error(sdo_abort::command_specifier);
+    if (opcode == op::get_od_list) {
+        if (data.size() < 2) return error(ethercat::sdo_abort::command_specifier);
         const auto list = static_cast<std::uint16_t>(data[0] | (data[1] << 8));
-        if (list > 5) return error(sdo_abort::value_range);
+        if (list > 5) return error(ethercat::sdo_abort::value_range);
         std::vector<std::uint8_t> payload;
         put_u16(payload, list);
         if (list == 0) {  // the length of every list
@@ -88,26 +83,26 @@ std::vector<std::vector<std::uint8_t>> sdo_info_response(const CoeDictionary& di
             for (const CoeObject& o : dictionary.objects())
                 if (in_list(o, list)) put_u16(payload, o.index);
         }
-        return fragments(od_list_response, payload, room, 2);
+        return fragments(op::od_list_response, payload, room, 2);
     }
-    if (opcode == get_object_description) {
-        if (data.size() < 2) return error(sdo_abort::command_specifier);
+    if (opcode == op::get_object_description) {
+        if (data.size() < 2) return error(ethercat::sdo_abort::command_specifier);
         const CoeObject* object = dictionary.find(static_cast<std::uint32_t>(data[0] | (data[1] << 8)));
-        if (!object) return error(sdo_abort::object_missing);
+        if (!object) return error(ethercat::sdo_abort::object_missing);
         std::vector<std::uint8_t> payload;
         put_u16(payload, object->index);
         put_u16(payload, object->data_type);
         payload.push_back(object->max_subindex());
         payload.push_back(object->code);
         payload.insert(payload.end(), object->name.begin(), object->name.end());
-        return fragments(object_description_response, payload, room, 1);
+        return fragments(op::object_description_response, payload, room, 1);
     }
-    if (opcode == get_entry_description) {
-        if (data.size() < 4) return error(sdo_abort::command_specifier);
+    if (opcode == op::get_entry_description) {
+        if (data.size() < 4) return error(ethercat::sdo_abort::command_specifier);
         const CoeObject* object = dictionary.find(static_cast<std::uint32_t>(data[0] | (data[1] << 8)));
-        if (!object) return error(sdo_abort::object_missing);
+        if (!object) return error(ethercat::sdo_abort::object_missing);
         const CoeEntry* entry = object->entry(data[2]);
-        if (!entry) return error(sdo_abort::subindex_missing);
+        if (!entry) return error(ethercat::sdo_abort::subindex_missing);
         const auto value_info = static_cast<std::uint8_t>(data[3] & (0x07 | value_info_default));
         std::vector<std::uint8_t> payload;
         put_u16(payload, object->index);
@@ -118,9 +113,9 @@ std::vector<std::vector<std::uint8_t>> sdo_info_response(const CoeDictionary& di
         put_u16(payload, entry->access);
         if (value_info & value_info_default) payload.insert(payload.end(), entry->default_value.begin(), entry->default_value.end());
         payload.insert(payload.end(), entry->name.begin(), entry->name.end());
-        return fragments(entry_description_response, payload, room, 1);
+        return fragments(op::entry_description_response, payload, room, 1);
     }
-    return error(sdo_abort::command_specifier);
+    return error(ethercat::sdo_abort::command_specifier);
 }
 
 }  // namespace esi::sim

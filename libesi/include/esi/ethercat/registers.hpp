@@ -1,11 +1,11 @@
 #pragma once
-// ESC register addresses and bits the emulator models (ESC datasheet section II, register map;
-// ETG.1000.4 for the DL registers). Named once here so that the emulator, its tests and a slave
-// stack agree on them.
+// ESC register addresses and bits (ESC datasheet section II, register map; ETG.1000.4 for the DL
+// registers). Named once here, in the protocol layer, so that the emulated ESC, the slave stacks
+// on it, the master and the network writers agree on them.
 
 #include <cstdint>
 
-namespace esi::esc::reg {
+namespace esi::ethercat::reg {
 
 inline constexpr std::uint16_t type = 0x0000;
 inline constexpr std::uint16_t revision = 0x0001;
@@ -20,6 +20,7 @@ inline constexpr std::uint16_t station_alias = 0x0012;
 inline constexpr std::uint16_t dl_control = 0x0100;
 inline constexpr std::uint16_t dl_port = 0x0101;   // loop control, 2 bits per port
 inline constexpr std::uint16_t dl_alias = 0x0103;  // bit 0: station alias enable (DL control bit 24)
+inline constexpr std::uint16_t physical_rw_offset = 0x0108;
 inline constexpr std::uint16_t dl_status = 0x0110;
 inline constexpr std::uint16_t al_control = 0x0120;
 inline constexpr std::uint16_t al_status = 0x0130;
@@ -44,6 +45,7 @@ inline constexpr std::uint16_t eeprom_pdi_state = 0x0501;
 inline constexpr std::uint16_t eeprom_control = 0x0502;
 inline constexpr std::uint16_t eeprom_address = 0x0504;
 inline constexpr std::uint16_t eeprom_data = 0x0508;
+inline constexpr std::uint16_t mii_management = 0x0510;  // 0x0510..0x0515: control/status, PHY address, register
 inline constexpr std::uint16_t fmmu0 = 0x0600;  // 16 bytes per FMMU
 inline constexpr std::uint16_t sm0 = 0x0800;    // 8 bytes per SyncManager
 inline constexpr std::uint16_t dc_receive_time_port0 = 0x0900;  // 0x0900/04/08/0C: ports 0..3
@@ -63,18 +65,23 @@ inline constexpr std::uint16_t dc_sync1_status = 0x098F;
 inline constexpr std::uint16_t dc_start_time = 0x0990;
 inline constexpr std::uint16_t dc_sync0_cycle = 0x09A0;
 inline constexpr std::uint16_t dc_sync1_cycle = 0x09A4;
+inline constexpr std::uint16_t dc_latch0_control = 0x09A8;  // and 0x09A9, latch 1
 inline constexpr std::uint16_t process_ram = 0x1000;
 
 // SyncManager register offsets (from sm0 + 8 n).
 inline constexpr std::uint16_t sm_start = 0, sm_length = 2, sm_control = 4, sm_status = 5, sm_activate = 6,
                                sm_pdi_control = 7;
 inline constexpr std::uint16_t sm_stride = 8;
+// SyncManager n's first register.
+[[nodiscard]] constexpr std::uint16_t sm(std::uint32_t n) { return static_cast<std::uint16_t>(sm0 + sm_stride * n); }
 inline constexpr std::uint8_t sm_control_watchdog_trigger = 0x40;
 // FMMU register offsets (from fmmu0 + 16 n).
 inline constexpr std::uint16_t fmmu_logical_start = 0, fmmu_length = 4, fmmu_logical_start_bit = 6,
                                fmmu_logical_stop_bit = 7, fmmu_physical_start = 8, fmmu_physical_start_bit = 10,
                                fmmu_type = 11, fmmu_activate = 12;
 inline constexpr std::uint16_t fmmu_stride = 16;
+// FMMU n's first register.
+[[nodiscard]] constexpr std::uint16_t fmmu(std::uint32_t n) { return static_cast<std::uint16_t>(fmmu0 + fmmu_stride * n); }
 
 // AL event request (0x0220) bits.
 inline constexpr std::uint32_t al_event_al_control = 1u << 0;
@@ -119,4 +126,4 @@ inline constexpr std::uint8_t sm_pdi_deactivate = 1u << 0, sm_pdi_repeat_ack = 1
 // ESC configuration (0x0141) bit 0: device emulation (AL status follows AL control).
 inline constexpr std::uint8_t esc_configuration_device_emulation = 1u << 0;
 
-}  // namespace esi::esc::reg
+}  // namespace esi::ethercat::reg
