@@ -43,6 +43,8 @@ TEST(AlStates, TheMachineHasTheElevenTransitionsOfEtg1000Part6) {
     std::vector<std::string_view> names;
     for (const Transition& t : state_machine_transitions()) names.push_back(transition_name(t));
     EXPECT_EQ(names, (std::vector<std::string_view>{"IP", "PI", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "IB", "BI"}));
+    const std::span<const std::string_view> listed = state_machine_transition_names();
+    EXPECT_EQ(std::vector<std::string_view>(listed.begin(), listed.end()), names);
     for (const char* bad : {"IS", "IO", "PO", "PB", "SB", "OB", "II", "BO"})
         EXPECT_FALSE(is_state_machine_transition(*parse_transition(bad))) << bad;
 }

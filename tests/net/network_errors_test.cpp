@@ -172,6 +172,14 @@ TEST(NetworkBuild, StartUpSdosAreCheckedAndEncoded) {
     EXPECT_THAT(build_errors(head + "{ index: 0x3FFF, type: UINT, value: 70000 }] }\n"), ElementsAre("net-sdo-value"));
     EXPECT_THAT(build_errors(head + "{ index: 0x6060, value: 8, complete_access: true }] }\n"), ElementsAre("net-sdo-complete-access"));
     EXPECT_THAT(build_errors(head + "{ index: 0x6060, value: 8, transition: IB }] }\n"), ElementsAre("net-transition"));
+    // BOOT's mailbox carries no CoE, and a "stay" transition the ENI allows runs no mailbox either.
+    EXPECT_THAT(build_errors(head + "{ index: 0x6060, value: 8, transition: BI }] }\n"), ElementsAre("net-transition"));
+    EXPECT_THAT(build_errors(head + "{ index: 0x6060, value: 8, transition: PP }] }\n", &text), ElementsAre("net-transition"));
+    EXPECT_NE(text.find("an SDO cannot be sent at PP"), std::string::npos) << text;
+    // Not a transition at all: refused when the file is read, with the nearest name.
+    EXPECT_THAT(read_errors("slaves:\n  - { device: X, sdos: [{ index: 0x6060, value: 8, transition: PX }] }\n", &text),
+                ElementsAre("net-transition"));
+    EXPECT_NE(text.find("'PX' is not a state transition"), std::string::npos) << text;
     EXPECT_THAT(build_errors(head + "{ index: 0x6060, value: 8, transition: SO }], limits: { transitions: [PS] } }\n"),
                 ElementsAre("net-limit-transition"));
     EXPECT_THAT(build_errors(head + "{ index: 0x607A, value: 1 }], limits: { max_init_cmd_bytes: 2 } }\n"), ElementsAre("net-limit-sdo-size"));

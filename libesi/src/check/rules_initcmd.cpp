@@ -5,6 +5,7 @@
 #include "check/areas.hpp"
 #include "check/queries.hpp"
 #include "check/rule_cache.hpp"
+#include "esi/ethercat/al_state.hpp"
 #include "esi/number.hpp"
 #include "esi/text_distance.hpp"
 
@@ -38,10 +39,10 @@ void for_each_init_cmd(const EsiDocument& document, F&& f) {
     }
 }
 
-// EtherCAT state machine transitions (ETG.1000.6 §6.4 / ETG.1000.4 ESM): Init, Pre-Operational,
-// Safe-Operational, Operational, Bootstrap. The item C series and Afag SE-Power EtherCAT manuals
-// list the nine without bootstrap (Tabelle 8).
-constexpr std::string_view esm_transitions[] = {"IP", "PI", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "IB", "BI"};
+// EtherCAT state machine transitions (ETG.1000.6 §6.4 / ETG.1000.4 ESM), the protocol layer's:
+// Init, Pre-Operational, Safe-Operational, Operational, Bootstrap. The item C series and Afag
+// SE-Power EtherCAT manuals list the nine without bootstrap (Tabelle 8).
+const std::span<const std::string_view> esm_transitions = ethercat::state_machine_transition_names();
 // The transitions schema 1.17 allows for InitCmds of every protocol (AoE, EoE, CoE, SoE, module CoE).
 constexpr std::string_view init_cmd_transitions[] = {"IP", "PS", "SO", "SP", "OP", "OS"};
 

@@ -133,6 +133,16 @@ std::string_view transition_name(const Transition& transition) {
 
 std::span<const Transition> state_machine_transitions() { return machine; }
 
+std::span<const std::string_view> state_machine_transition_names() {
+    static const std::array<std::string_view, machine.size()> names = [] {
+        std::array<std::string_view, machine.size()> out{};
+        for (std::size_t i = 0; i < machine.size(); ++i)
+            out[i] = pair_names[position(machine[i].from) * states.size() + position(machine[i].to)];
+        return out;
+    }();
+    return names;
+}
+
 bool is_state_machine_transition(const Transition& transition) {
     return std::find(machine.begin(), machine.end(), transition) != machine.end();
 }

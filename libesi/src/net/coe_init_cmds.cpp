@@ -14,6 +14,7 @@
 #include <functional>
 
 #include "esi/data_types.hpp"
+#include "esi/ethercat/al_state.hpp"
 #include "esi/model/object_layout.hpp"
 #include "esi/model/typed_value.hpp"
 #include "slave_context.hpp"
@@ -101,7 +102,12 @@ std::optional<ValueType> value_type_of(const SdoSpec& sdo, const ObjectEntry* en
     return t;
 }
 
-constexpr std::string_view coe_transitions[] = {"IP", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "PI"};
+// The transitions at which an SDO can be sent: the state machine's, but those into and out of
+// BOOT (whose mailbox carries FoE only).
+bool coe_transition(std::string_view text) {
+    const std::optional<ethercat::Transition> t = ethercat::parse_transition(text);
+    return t && ethercat::is_state_machine_transition(*t) && t->from != ethercat::AlState::boot && t->to != ethercat::AlState::boot;
+}
 
 void network_sdos(SlaveContext& c, std::vector<CoeCommand>& out) {
     const bool any_dictionary = has_dictionary(c);
@@ -110,7 +116,7 @@ void network_sdos(SlaveContext& c, std::vector<CoeCommand>& out) {
         const std::string where = fmt::format("{}:{:02X}", hex_index(sdo.index), sdo.subindex);
         bool ok = true;
         for (const std::string& t : sdo.transitions) {
-            if (std::find(std::begin(coe_transitions), std::end(coe_transitions), t) == std::end(coe_transitions)) {
+            if (!coe_transition(t)) {
                 c.error(sdo.transition_pos, "net-transition", "an SDO cannot be sent at " + t + " (the mailbox runs from PREOP on)");
                 ok = false;
             } else if (!c.limits.allowed_transitions.empty() &&

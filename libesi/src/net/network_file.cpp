@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 
+#include "esi/ethercat/al_state.hpp"
 #include "esi/io/read_file.hpp"
 #include "esi/net/network_keys.hpp"
 #include "esi/net/network_spec.hpp"
@@ -19,7 +20,17 @@ namespace {
 using yaml::Fields;
 using yaml::Node;
 
-constexpr std::string_view valid_transitions[] = {"IP", "PS", "SO", "SP", "OS", "OP", "SI", "OI", "PI", "IB", "BI", "II", "PP", "SS"};
+// What an ENI InitCmd's Transition may hold (ETG.2100 schema): the state machine's transitions
+// and the three "stay" transitions II, PP and SS.
+const std::vector<std::string_view>& valid_transitions() {
+    static const std::vector<std::string_view> names = [] {
+        const std::span<const std::string_view> machine = ethercat::state_machine_transition_names();
+        std::vector<std::string_view> out(machine.begin(), machine.end());
+        out.insert(out.end(), {"II", "PP", "SS"});
+        return out;
+    }();
+    return names;
+}
 
 class NetworkParser {
 public:
@@ -219,9 +230,9 @@ private:
             out.transition_pos = n->pos();
             const std::vector<std::string> given = strings(*n, "transition");
             for (const std::string& t : given) {
-                if (std::find(std::begin(valid_transitions), std::end(valid_transitions), t) == std::end(valid_transitions)) {
+                if (std::find(valid_transitions().begin(), valid_transitions().end(), t) == valid_transitions().end()) {
                     reader_.error(*n, "net-transition", "'" + t + "' is not a state transition (IP, PS, SO, SP, OS, OP, SI, OI, PI …)" +
-                                                            yaml::did_you_mean(t, valid_transitions));
+                                                            yaml::did_you_mean(t, valid_transitions()));
                     continue;
                 }
                 out.transitions.push_back(t);

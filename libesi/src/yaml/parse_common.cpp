@@ -6,6 +6,7 @@
 #include <set>
 
 #include "esi/derive/object_builder.hpp"
+#include "esi/ethercat/al_state.hpp"
 #include "esi/model/mailbox_flags.hpp"
 #include "esi/text_distance.hpp"
 #include "yaml/extras.hpp"
@@ -120,7 +121,7 @@ std::optional<ObjectRef> SourceParser::object_ref(const Node& node, const Object
 
 std::optional<std::vector<Transition>> SourceParser::transitions(const Node& node) {
     // The EtherCAT state machine's transitions (ETG.1000.6 6.4.1; servo manuals Tabelle 8).
-    static constexpr std::string_view known[] = {"IP", "PI", "PS", "SP", "SO", "OS", "OP", "SI", "OI", "IB", "BI"};
+    const std::span<const std::string_view> known = ethercat::state_machine_transition_names();
     std::vector<Node> items;
     if (node.IsSequence()) {
         for (const auto& n : node) items.push_back(n);
@@ -131,8 +132,10 @@ std::optional<std::vector<Transition>> SourceParser::transitions(const Node& nod
     for (const auto& n : items) {
         const auto t = r_.text(n, "transition");
         if (!t) continue;
-        if (std::find(std::begin(known), std::end(known), *t) == std::end(known)) {
-            std::string message = "'" + *t + "' is not a state transition (IP, PS, SP, SO, OS, OP, PI, SI, OI, IB, BI)";
+        if (std::find(known.begin(), known.end(), *t) == known.end()) {
+            std::string list;
+            for (const std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+            std::string message = "'" + *t + "' is not a state transition (" + list + ")";
             message += did_you_mean(*t, known);
             r_.error(n, "yaml-value", message);
             continue;

@@ -37,6 +37,8 @@ struct Transition {
 // OI, IB, BI. A device refuses any other request with 0x0011.
 [[nodiscard]] std::span<const Transition> state_machine_transitions();
 [[nodiscard]] bool is_state_machine_transition(const Transition& transition);
+// Their two-letter names, in the same order ("IP", "PI", "PS", ...).
+[[nodiscard]] std::span<const std::string_view> state_machine_transition_names();
 
 // AL status codes (ETG.1000.6 Table 11).
 namespace al_code {
