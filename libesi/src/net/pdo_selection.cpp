@@ -15,6 +15,7 @@
 #include "esi/number.hpp"
 #include "esi/yaml/reader.hpp"
 #include "slave_context.hpp"
+#include "sm_kind.hpp"
 
 namespace esi::net {
 
@@ -51,19 +52,11 @@ std::vector<AlternativeMapping> alternative_mappings(const Device& device) {
     return out;
 }
 
-SmKind kind_of(const std::string& type) {
-    if (type == "MBoxOut") return SmKind::mailbox_out;
-    if (type == "MBoxIn") return SmKind::mailbox_in;
-    if (type == "Outputs") return SmKind::outputs;
-    if (type == "Inputs") return SmKind::inputs;
-    return SmKind::unused;
-}
-
 // The process-data SM a PDO goes to when nothing names one: the first of its direction.
 std::optional<std::uint32_t> default_sm(const Device& device, PdoDirection direction) {
     const SmKind wanted = direction == PdoDirection::rx ? SmKind::outputs : SmKind::inputs;
     for (std::size_t i = 0; i < device.sms.size(); ++i)
-        if (kind_of(device.sms[i].type) == wanted) return static_cast<std::uint32_t>(i);
+        if (sm_kind_of(device.sms[i].type) == wanted) return static_cast<std::uint32_t>(i);
     return std::nullopt;
 }
 
@@ -143,7 +136,7 @@ void select_pdos(SlaveContext& c) {
             return std::nullopt;
         }
         const SmKind wanted = a.pdo->direction == PdoDirection::rx ? SmKind::outputs : SmKind::inputs;
-        if (*sm >= c.device.sms.size() || kind_of(c.device.sms[*sm].type) != wanted) {
+        if (*sm >= c.device.sms.size() || sm_kind_of(c.device.sms[*sm].type) != wanted) {
             c.error(pos, "net-pdo-sm",
                     fmt::format("{} {} goes to SM{}, which is not an {} SyncManager of {}", a.pdo->element_name(), hex_index(a.index),
                                 *sm, wanted == SmKind::outputs ? "Outputs" : "Inputs", c.device.type.text));

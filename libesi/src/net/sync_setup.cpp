@@ -12,18 +12,11 @@
 
 #include "esi/number.hpp"
 #include "slave_context.hpp"
+#include "sm_kind.hpp"
 
 namespace esi::net {
 
 namespace {
-
-SmKind kind_of(const std::string& type) {
-    if (type == "MBoxOut") return SmKind::mailbox_out;
-    if (type == "MBoxIn") return SmKind::mailbox_in;
-    if (type == "Outputs") return SmKind::outputs;
-    if (type == "Inputs") return SmKind::inputs;
-    return SmKind::unused;
-}
 
 std::optional<std::uint32_t> extras_number(const Extras& extras, std::string_view path) {
     const XmlElement* e = extras.find(path);
@@ -47,7 +40,7 @@ void setup_sync_managers(SlaveContext& c) {
         const SyncManager& esi_sm = d.sms[i];
         SmSetup sm;
         sm.number = static_cast<std::uint32_t>(i);
-        sm.kind = kind_of(esi_sm.type);
+        sm.kind = sm_kind_of(esi_sm.type);
         sm.type = esi_sm.type;
         sm.start_address = static_cast<std::uint16_t>(esi_sm.start_address.value_or(0));
         sm.control_byte = static_cast<std::uint8_t>(esi_sm.control_byte.value_or(0));
