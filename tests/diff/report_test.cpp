@@ -30,11 +30,7 @@ const esi::DiffLabels labels{"old.xml", "new.xml"};
 
 void check_golden(const std::string& name, const std::string& actual) {
     const fs::path path = golden(name);
-    const char* update = std::getenv("ESI_UPDATE_GOLDEN");
-    if (update && std::string(update) == "1") {
-        esi::test::write_text(path, actual);
-        GTEST_SKIP() << "golden file " << path << " rewritten";
-    }
+    if (esi::test::rewrite_golden(path, actual)) GTEST_SKIP() << "golden file " << path << " rewritten";
     ASSERT_TRUE(fs::exists(path)) << "missing golden file " << path << " (run with ESI_UPDATE_GOLDEN=1)";
     EXPECT_EQ(esi::test::read_text(path), actual)
         << "report differs from " << path << "; if intended, regenerate with ESI_UPDATE_GOLDEN=1";

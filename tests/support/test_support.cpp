@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -127,6 +128,13 @@ void write_text(const std::filesystem::path& path, const std::string& text) {
     std::filesystem::create_directories(path.parent_path());
     std::ofstream out(path, std::ios::binary);
     out << text;
+}
+
+bool rewrite_golden(const std::filesystem::path& path, const std::string& text) {
+    const char* update = std::getenv("ESI_UPDATE_GOLDEN");
+    if (!update || std::string(update) != "1") return false;
+    write_text(path, text);
+    return true;
 }
 
 TempDir::TempDir() {

@@ -29,6 +29,10 @@ RunResult run(const std::vector<std::string>& argv, const std::string& stdin_dat
 
 std::string read_text(const std::filesystem::path& path);
 void write_text(const std::filesystem::path& path, const std::string& text);
+// Golden files are rewritten only when ESI_UPDATE_GOLDEN is exactly "1" (not "0", not empty):
+// then `text` goes to `path` and the caller skips its comparison (GTEST_SKIP), so a run that
+// rewrites never passes as a check.
+[[nodiscard]] bool rewrite_golden(const std::filesystem::path& path, const std::string& text);
 
 // A fresh empty directory under the system temp dir, removed by the destructor.
 class TempDir {
