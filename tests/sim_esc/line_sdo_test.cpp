@@ -124,3 +124,39 @@ TEST(LineSdo, ADeviceWithoutSdoInformationSaysSoAndRefusesTheOdList) {
 
 }  // namespace
 }  // namespace esi::test
+
+namespace esi::test {
+namespace {
+
+// A master reads 0x1C00 and then 0x1C10+n for every process-data SM it lists (SOEM, KickCAT):
+// each of those assignment objects exists, with no PDO assigned where the device has none for
+// that SM (issue 37, F14: the encoder and modular-coupler samples had no 0x1C12).
+TEST(LineSdo, EverySmTheSmTypesObjectListsAsProcessDataHasItsAssignmentObject) {
+    std::size_t checked = 0;
+    for (const ModelDevice& d : sample_devices()) {
+        SCOPED_TRACE(d.file.filename().string() + " " + d.device->type.text);
+        std::string error;
+        std::optional<sim::Line> line = device_line(d, runnable_image(d), false, error);
+        ASSERT_TRUE(line) << error;
+        LineMaster master(*line);
+        ASSERT_TRUE(master.scan());
+        LineSlave& s = master.slaves[0];
+        ASSERT_TRUE(master.setup_mailbox(s));
+        ASSERT_EQ(master.request_state(s, 2).state(), 2);
+        const SdoUpload count = master.upload(s, 0x1C00, 0);
+        ASSERT_TRUE(count.ok() && !count.data.empty()) << "0x1C00:00 abort 0x" << std::hex << count.abort_code << count.failure;
+        for (unsigned n = 1; n <= count.data[0]; ++n) {
+            const SdoUpload type = master.upload(s, 0x1C00, static_cast<std::uint8_t>(n));
+            ASSERT_TRUE(type.ok() && !type.data.empty());
+            if (type.data[0] != 3 && type.data[0] != 4) continue;
+            const auto index = static_cast<std::uint16_t>(0x1C10 + n - 1);
+            const SdoUpload assigned = master.upload(s, index, 0);
+            EXPECT_TRUE(assigned.ok()) << "0x" << std::hex << index << ":00 abort 0x" << assigned.abort_code << assigned.failure;
+            ++checked;
+        }
+    }
+    EXPECT_GE(checked, 10u);
+}
+
+}  // namespace
+}  // namespace esi::test

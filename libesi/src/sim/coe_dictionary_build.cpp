@@ -6,6 +6,7 @@
 #include <map>
 
 #include "esi/derive/derive.hpp"
+#include "esi/ethercat/sync_manager_type.hpp"
 #include "esi/model/object_layout.hpp"
 #include "esi/net/default_slave.hpp"
 
@@ -337,6 +338,38 @@ void fill_sm_types(CoeDictionary& dictionary, const std::vector<SmRole>& roles) 
     }
 }
 
+void add_missing_assignment_objects(CoeDictionary& dictionary) {
+    const CoeObject* types = dictionary.find(0x1C00);
+    if (!types) return;
+    std::vector<std::uint16_t> missing;
+    for (const CoeEntry& e : types->entries) {
+        if (e.subindex == 0 || e.subindex > 32) continue;
+        const auto type = ethercat::sync_manager_type_from_code(static_cast<std::uint8_t>(e.unsigned_value()));
+        if (type != ethercat::SyncManagerType::outputs && type != ethercat::SyncManagerType::inputs) continue;
+        const auto index = static_cast<std::uint16_t>(0x1C10 + e.subindex - 1u);
+        if (!dictionary.find(index)) missing.push_back(index);
+    }
+    for (const std::uint16_t index : missing) {
+        CoeObject o;
+        o.index = index;
+        o.code = object_code::array;
+        o.data_type = 0x0006;  // UINT: the PDO indices an assignment holds
+        o.name = "Sync manager " + std::to_string(index - 0x1C10) + " PDO assignment";
+        o.from_model = false;
+        CoeEntry count;
+        count.subindex = 0;
+        count.name = "Number of assigned PDOs";
+        count.basic = find_basic_type("USINT");
+        count.data_type = 0x0005;
+        count.bit_size = 8;
+        count.access = access_bit::read_all | access_bit::write_preop;
+        count.value.assign(1, 0);
+        count.default_value = count.value;
+        o.entries.push_back(std::move(count));
+        dictionary.add(std::move(o));
+    }
+}
+
 DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics) {
     DeviceModel model;
     model.device = device;
@@ -381,6 +414,7 @@ DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, D
     for (const auto& [sm, pdos] : modules.assignment) set_default_assignment(model.dictionary, sm, pdos);
     add_objects_from_pdo_entries(d, model.dictionary);
     accept_init_cmds(d, model.dictionary);
+    add_missing_assignment_objects(model.dictionary);
     return model;
 }
 

@@ -25,6 +25,12 @@ struct DeviceModel {
 // SMs, and the device's SMs say what it holds (1 MBoxOut, 2 MBoxIn, 3 Outputs, 4 Inputs).
 void fill_sm_types(CoeDictionary& dictionary, const std::vector<SmRole>& roles);
 
+// The assignment object 0x1C10+n, with sub-index 0 = 0 (no PDO assigned), for every SM n that
+// 0x1C00 lists as a process-data SM (outputs or inputs) and that has none: a master reads 0x1C12
+// and 0x1C13 after 0x1C00 and stops mapping at an abort (issue 37, F14; SSC and SOES devices have
+// the object), as docs/esi-sim.md promises. Objects a source declares are never replaced.
+void add_missing_assignment_objects(CoeDictionary& dictionary);
+
 [[nodiscard]] DeviceModel build_device_model(const EtherCATInfo& info, const Device& device, Diagnostics& diagnostics);
 
 }  // namespace esi::sim

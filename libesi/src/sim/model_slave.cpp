@@ -152,6 +152,7 @@ std::unique_ptr<esc::SlaveStack> make_model_slave(const EtherCATInfo& info, cons
     std::vector<SmRole> roles;
     for (const SmExpectation& sm : expected.sms) roles.push_back(sm.role);
     fill_sm_types(model.dictionary, roles);
+    add_missing_assignment_objects(model.dictionary);
     if (device.mailbox && device.mailbox->coe && (!expected.mailbox_out || !expected.mailbox_in)) {
         diagnostics.emplace(Severity::error, "sim-no-mailbox",
                             "the device declares CoE but no mailbox SyncManagers with a size (MBoxOut and MBoxIn Sm with "
