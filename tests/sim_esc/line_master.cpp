@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "esi/esc/frame.hpp"
+#include "esi/ethercat/al_state.hpp"
+#include "esi/ethercat/mailbox.hpp"
 #include "esi/ethercat/registers.hpp"
 #include "esi/sii/image.hpp"
 
@@ -29,22 +31,27 @@ void put32(std::vector<std::uint8_t>& b, std::size_t at, std::uint32_t v) {
 }
 std::vector<std::uint8_t> le16(std::uint16_t v) { return {static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v >> 8)}; }
 
-// ETG.1000.6 5.6: the CoE header's service (bits 12..15 of its 16 bits).
-constexpr std::uint8_t coe_sdo_request = 2, coe_sdo_response = 3, coe_sdo_information = 8;
-constexpr std::uint8_t mailbox_type_error = 0, mailbox_type_coe = 3;
+// The protocol's codes (esi/ethercat/mailbox.hpp).
+namespace cmd = ethercat::sdo_command;
+namespace op = ethercat::sdo_info_opcode;
+using ethercat::coe_service::sdo_information;
+using ethercat::coe_service::sdo_request;
+using ethercat::coe_service::sdo_response;
+using ethercat::mailbox_type::coe;
+using ethercat::mailbox_type::error;
 
 std::uint8_t coe_service(const std::vector<std::uint8_t>& answer) { return answer[7] >> 4; }
 
 // An SDO request: CoE header, command, index, sub-index, four data bytes.
-std::vector<std::uint8_t> sdo_request(std::uint8_t command, std::uint16_t index, std::uint8_t subindex) {
-    return {0x00, static_cast<std::uint8_t>(coe_sdo_request << 4), command, static_cast<std::uint8_t>(index),
+std::vector<std::uint8_t> sdo_request_frame(std::uint8_t command, std::uint16_t index, std::uint8_t subindex) {
+    return {0x00, static_cast<std::uint8_t>(sdo_request << 4), command, static_cast<std::uint8_t>(index),
             static_cast<std::uint8_t>(index >> 8), subindex, 0, 0, 0, 0};
 }
 
 // An SDO answer that is an abort (command 0x80): its code. ETG.1000.6 5.6.2.7 has the abort
 // transfer as an "SDO request" (service 2); an abort under another service is not taken as one.
 std::optional<std::uint32_t> abort_code(const std::vector<std::uint8_t>& a) {
-    if (a.size() >= 16 && coe_service(a) == coe_sdo_request && a[8] == 0x80) return u32(a, 12);
+    if (a.size() >= 16 && coe_service(a) == sdo_request && a[8] == ethercat::sdo_abort_command) return u32(a, 12);
     return std::nullopt;
 }
 
@@ -147,7 +154,8 @@ bool LineMaster::scan() {
     for (std::size_t i = 0; i < line_.size(); ++i) {
         LineSlave s;
         s.station = static_cast<std::uint16_t>(0x1001 + i);
-        const auto assigned = datagram(Command::apwr, static_cast<std::uint16_t>(-static_cast<int>(i)), reg::station_address, le16(s.station));
+        const auto position = static_cast<std::uint16_t>(-static_cast<int>(i));  // auto-increment address
+        const auto assigned = datagram(Command::apwr, position, reg::station_address, le16(s.station));
         if (!assigned || assigned->working_counter != 1) return false;
         const auto eeprom = read16(s.station, reg::eeprom_control);
         const auto dl = read16(s.station, reg::dl_status);
@@ -179,7 +187,7 @@ bool LineMaster::scan() {
         s.decoded = sii::decode_image(s.sii);
         const sii::Header& h = s.decoded.image.header;
         s.mailbox = h.standard_receive_size != 0 && h.standard_send_size != 0;
-        s.coe = s.mailbox && (h.mailbox_protocols & 0x04);
+        s.coe = s.mailbox && (h.mailbox_protocols & sii::mailbox_protocol::coe);
         slaves.push_back(std::move(s));
     }
     return true;
@@ -206,7 +214,7 @@ StateResult LineMaster::request_state(LineSlave& slave, std::uint8_t state, int 
 }
 
 StateResult LineMaster::acknowledge_error(LineSlave& slave, std::uint8_t state) {
-    write16(slave.station, reg::al_control, static_cast<std::uint16_t>(state | 0x10));
+    write16(slave.station, reg::al_control, static_cast<std::uint16_t>(state | ethercat::al_error_bit));
     StateResult r;
     for (int i = 0; i < 50; ++i) {
         if (output_image_bytes_ + input_image_bytes_ > 0) cycle(std::vector<std::uint8_t>(output_image_bytes_, 0));
@@ -244,16 +252,16 @@ bool LineMaster::setup_mailbox(LineSlave& slave) {
 
 std::optional<std::vector<std::uint8_t>> LineMaster::mailbox_receive(LineSlave& slave, int polls) {
     for (int i = 0; i < polls; ++i) {
-        const auto status = read(slave.station, static_cast<std::uint16_t>(reg::sm0 + reg::sm_stride + reg::sm_status), 1);
+        const auto status = read(slave.station, static_cast<std::uint16_t>(reg::sm(1) + reg::sm_status), 1);
         if (!status) return std::nullopt;
-        if (!((*status)[0] & 0x08)) continue;  // SM1 not full yet
+        if (!((*status)[0] & reg::sm_status_mailbox_full)) continue;  // SM1 not full yet
         auto answer = read(slave.station, slave.mbx_in_start, slave.mbx_in_size);
         if (!answer || answer->size() < 6) return std::nullopt;
         const std::size_t length = u16(*answer, 0);
         if (length + 6 > answer->size()) return std::nullopt;
         answer->resize(6 + length);
         // An emergency (CoE service 1) is not the answer; wait on.
-        if ((answer->at(5) & 0x0F) == mailbox_type_coe && length >= 2 && coe_service(*answer) == 1) continue;
+        if ((answer->at(5) & 0x0F) == coe && length >= 2 && coe_service(*answer) == 1) continue;
         return answer;
     }
     return std::nullopt;
@@ -275,15 +283,16 @@ std::optional<std::vector<std::uint8_t>> LineMaster::mailbox_exchange(LineSlave&
 
 SdoUpload LineMaster::upload(LineSlave& slave, std::uint16_t index, std::uint8_t subindex, bool complete_access) {
     SdoUpload r;
-    const auto answer = mailbox_exchange(slave, mailbox_type_coe, sdo_request(complete_access ? 0x50 : 0x40, index, subindex));
+    const auto command = static_cast<std::uint8_t>(cmd::byte_of(cmd::initiate_upload) | (complete_access ? cmd::complete_access : 0));
+    const auto answer = mailbox_exchange(slave, coe, sdo_request_frame(command, index, subindex));
     if (!answer) return {{}, 0, "no answer"};
     const std::vector<std::uint8_t>& a = *answer;
-    if ((a[5] & 0x0F) == mailbox_type_error) return {{}, 0, "mailbox error"};
+    if ((a[5] & 0x0F) == error) return {{}, 0, "mailbox error"};
     if (a.size() < 16) return {{}, 0, "answer too short"};
     if (const auto code = abort_code(a)) return {{}, *code, ""};
-    if (coe_service(a) != coe_sdo_response || (a[8] & 0xE0) != 0x40) return {{}, 0, "not an upload response"};
-    if (a[8] & 0x02) {  // expedited: 4 - n bytes
-        const std::size_t size = (a[8] & 0x01) ? 4 - ((a[8] >> 2) & 0x03) : 4;
+    if (coe_service(a) != sdo_response || cmd::specifier(a[8]) != cmd::response_initiate_upload) return {{}, 0, "not an upload response"};
+    if (a[8] & cmd::expedited) {  // 4 - n bytes
+        const std::size_t size = (a[8] & cmd::size_indicated) ? 4 - ((a[8] >> 2) & 0x03) : 4;
         r.data.assign(a.begin() + 12, a.begin() + 12 + static_cast<std::ptrdiff_t>(size));
         return r;
     }
@@ -293,16 +302,17 @@ SdoUpload LineMaster::upload(LineSlave& slave, std::uint16_t index, std::uint8_t
     std::uint8_t toggle = 0;
     for (int segments = 0; r.data.size() < total; ++segments) {
         if (segments > 10000) return {{}, 0, "too many segments"};
-        const auto s = mailbox_exchange(slave, mailbox_type_coe,
-                                        {0x00, static_cast<std::uint8_t>(coe_sdo_request << 4), static_cast<std::uint8_t>(0x60 | toggle), 0, 0, 0, 0, 0, 0, 0});
+        const auto s = mailbox_exchange(slave, coe,
+                                        {0x00, static_cast<std::uint8_t>(sdo_request << 4),
+                                         static_cast<std::uint8_t>(cmd::byte_of(cmd::upload_segment) | toggle), 0, 0, 0, 0, 0, 0, 0});
         if (!s || s->size() < 16) return {{}, 0, "no segment"};
         if (const auto code = abort_code(*s)) return {{}, *code, ""};
-        if ((s->at(8) & 0x10) != toggle) return {{}, 0, "toggle bit out of step"};
+        if ((s->at(8) & cmd::toggle) != toggle) return {{}, 0, "toggle bit out of step"};
         std::size_t n = s->size() - 9;
         if (n == 7) n -= (s->at(8) >> 1) & 0x07;
         r.data.insert(r.data.end(), s->begin() + 9, s->begin() + 9 + static_cast<std::ptrdiff_t>(n));
         if (s->at(8) & 0x01) break;
-        toggle ^= 0x10;
+        toggle ^= cmd::toggle;
     }
     if (r.data.size() != total) r.failure = "size " + std::to_string(r.data.size()) + " of " + std::to_string(total);
     return r;
@@ -310,26 +320,31 @@ SdoUpload LineMaster::upload(LineSlave& slave, std::uint16_t index, std::uint8_t
 
 std::uint32_t LineMaster::download(LineSlave& slave, std::uint16_t index, std::uint8_t subindex, const std::vector<std::uint8_t>& data,
                                    bool complete_access) {
-    const std::uint8_t ca = complete_access ? 0x10 : 0;
+    const std::uint8_t ca = complete_access ? cmd::complete_access : 0;
     std::vector<std::uint8_t> request;
     if (!data.empty() && data.size() <= 4) {
-        request = sdo_request(static_cast<std::uint8_t>(0x23 | ca | ((4 - data.size()) << 2)), index, subindex);
+        const auto unused = static_cast<std::uint8_t>((4 - data.size()) << 2);  // bytes of the 4 not used
+        const auto command =
+            static_cast<std::uint8_t>(cmd::byte_of(cmd::initiate_download) | cmd::expedited | cmd::size_indicated | ca | unused);
+        request = sdo_request_frame(command, index, subindex);
         std::copy(data.begin(), data.end(), request.begin() + 6);
     } else {
-        request = sdo_request(static_cast<std::uint8_t>(0x21 | ca), index, subindex);
+        request = sdo_request_frame(static_cast<std::uint8_t>(cmd::byte_of(cmd::initiate_download) | cmd::size_indicated | ca), index,
+                                    subindex);
         put32(request, 6, static_cast<std::uint32_t>(data.size()));
         if (data.size() + 16 > slave.mbx_out_size) return 0xFFFFFFFF;  // segmented download: not needed by the tests
         request.insert(request.end(), data.begin(), data.end());
     }
-    const auto a = mailbox_exchange(slave, mailbox_type_coe, request);
+    const auto a = mailbox_exchange(slave, coe, request);
     if (!a || a->size() < 16) return 0xFFFFFFFF;
     if (const auto code = abort_code(*a)) return *code;
-    return coe_service(*a) == coe_sdo_response && a->at(8) == 0x60 ? 0 : 0xFFFFFFFE;
+    return coe_service(*a) == sdo_response && a->at(8) == cmd::byte_of(cmd::response_initiate_download) ? 0 : 0xFFFFFFFE;
 }
 
 std::optional<std::vector<std::uint16_t>> LineMaster::od_list(LineSlave& slave, std::string& failure) {
-    const std::vector<std::uint8_t> request{0x00, static_cast<std::uint8_t>(coe_sdo_information << 4), 0x01, 0x00, 0x00, 0x00, 0x01, 0x00};
-    auto answer = mailbox_exchange(slave, mailbox_type_coe, request);
+    const std::vector<std::uint8_t> request{0x00, static_cast<std::uint8_t>(sdo_information << 4), op::get_od_list, 0x00, 0x00, 0x00,
+                                            0x01, 0x00};
+    auto answer = mailbox_exchange(slave, coe, request);
     std::vector<std::uint16_t> indices;
     bool first = true;
     for (int fragments = 0; fragments < 1000; ++fragments) {
@@ -338,19 +353,20 @@ std::optional<std::vector<std::uint16_t>> LineMaster::od_list(LineSlave& slave, 
             return std::nullopt;
         }
         const std::vector<std::uint8_t>& a = *answer;
-        if ((a[5] & 0x0F) == mailbox_type_error) {
+        if ((a[5] & 0x0F) == error) {
             failure = "mailbox error " + std::to_string(a.size() >= 10 ? u16(a, 8) : 0);
             return std::nullopt;
         }
-        if (a.size() < 12 || coe_service(a) != coe_sdo_information || (a[8] & 0x7F) != 0x02) {
-            failure = (a.size() >= 16 && (a[8] & 0x7F) == 0x07) ? "SDO Information error " + std::to_string(u32(a, 12)) : "not an OD list response";
+        if (a.size() < 12 || coe_service(a) != sdo_information || (a[8] & ~op::incomplete) != op::od_list_response) {
+            const bool info_error = a.size() >= 16 && (a[8] & ~op::incomplete) == op::error;
+            failure = info_error ? "SDO Information error " + std::to_string(u32(a, 12)) : "not an OD list response";
             return std::nullopt;
         }
         std::size_t at = 12;
         if (first) at += 2;  // the list type
         first = false;
         for (; at + 2 <= a.size(); at += 2) indices.push_back(u16(a, at));
-        if (!(a[8] & 0x80)) return indices;  // no more fragments
+        if (!(a[8] & op::incomplete)) return indices;  // no more fragments
         answer = mailbox_receive(slave);
     }
     failure = "too many fragments";
@@ -358,10 +374,12 @@ std::optional<std::vector<std::uint16_t>> LineMaster::od_list(LineSlave& slave, 
 }
 
 std::optional<ObjectDescription> LineMaster::object_description(LineSlave& slave, std::uint16_t index, std::string& failure) {
-    const std::vector<std::uint8_t> request{0x00, static_cast<std::uint8_t>(coe_sdo_information << 4), 0x03, 0x00, 0x00, 0x00,
+    const std::vector<std::uint8_t> request{0x00, static_cast<std::uint8_t>(sdo_information << 4), op::get_object_description, 0x00, 0x00,
+                                            0x00,
                                             static_cast<std::uint8_t>(index), static_cast<std::uint8_t>(index >> 8)};
-    auto answer = mailbox_exchange(slave, mailbox_type_coe, request);
-    if (!answer || answer->size() < 18 || coe_service(*answer) != coe_sdo_information || (answer->at(8) & 0x7F) != 0x04) {
+    auto answer = mailbox_exchange(slave, coe, request);
+    if (!answer || answer->size() < 18 || coe_service(*answer) != sdo_information ||
+        (answer->at(8) & ~op::incomplete) != op::object_description_response) {
         failure = "no object description";
         return std::nullopt;
     }
@@ -373,7 +391,7 @@ std::optional<ObjectDescription> LineMaster::object_description(LineSlave& slave
     d.object_code = a[17];
     d.name.assign(a.begin() + 18, a.end());
     // A name longer than one mailbox comes in further fragments.
-    for (int fragments = 0; (answer->at(8) & 0x80) && fragments < 100; ++fragments) {
+    for (int fragments = 0; (answer->at(8) & op::incomplete) && fragments < 100; ++fragments) {
         answer = mailbox_receive(slave);
         if (!answer || answer->size() < 12) break;
         d.name.append(answer->begin() + 12, answer->end());
@@ -497,7 +515,7 @@ std::uint16_t LineMaster::setup_process_data() {
             put16(config, 2, bytes);
             config[4] = record->control;
             config[6] = bytes > 0 ? 1 : 0;
-            write(s.station, static_cast<std::uint16_t>(reg::sm0 + reg::sm_stride * sm), config);
+            write(s.station, reg::sm(sm), config);
             if (bytes == 0) continue;
             std::vector<std::uint8_t> f(16, 0);
             const std::uint32_t logical = type == 3 ? out_at : in_at;
@@ -507,7 +525,7 @@ std::uint16_t LineMaster::setup_process_data() {
             put16(f, reg::fmmu_physical_start, record->start_address);
             f[reg::fmmu_type] = type == 3 ? 2 : 1;
             f[reg::fmmu_activate] = 1;
-            write(s.station, static_cast<std::uint16_t>(reg::fmmu0 + reg::fmmu_stride * fmmu++), f);
+            write(s.station, reg::fmmu(fmmu++), f);
             (type == 3 ? out_at : in_at) += bytes;
             (type == 3 ? writes : reads) = true;
         }

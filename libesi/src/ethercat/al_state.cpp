@@ -137,7 +137,7 @@ std::span<const std::string_view> state_machine_transition_names() {
     static const std::array<std::string_view, machine.size()> names = [] {
         std::array<std::string_view, machine.size()> out{};
         for (std::size_t i = 0; i < machine.size(); ++i)
-            out[i] = pair_names[position(machine[i].from) * states.size() + position(machine[i].to)];
+            out[i] = transition_name(machine[i]);
         return out;
     }();
     return names;

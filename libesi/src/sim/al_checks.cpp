@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "esi/ethercat/dc.hpp"
+#include "esi/ethercat/sync_manager_type.hpp"
 #include "esi/sii/build.hpp"
 #include "esi/sii/layout.hpp"
 #include "sim/al_registers.hpp"
@@ -13,25 +14,6 @@
 namespace esi::sim {
 
 namespace {
-
-// SII SM types (ETG.2010 Table 11) and ESI Sm texts.
-SmRole role_of_sii_type(std::uint8_t type) {
-    switch (type) {
-        case 1: return SmRole::mailbox_out;
-        case 2: return SmRole::mailbox_in;
-        case 3: return SmRole::outputs;
-        case 4: return SmRole::inputs;
-        default: return SmRole::unused;
-    }
-}
-
-SmRole role_of_text(const std::string& type) {
-    if (type == "MBoxOut") return SmRole::mailbox_out;
-    if (type == "MBoxIn") return SmRole::mailbox_in;
-    if (type == "Outputs") return SmRole::outputs;
-    if (type == "Inputs") return SmRole::inputs;
-    return SmRole::unused;
-}
 
 // Mode (bits 0–1) and direction (bits 2–3) decide what an SM is; the interrupt and watchdog bits
 // are the master's choice and are not compared.
@@ -51,13 +33,15 @@ DeviceExpectations device_expectations(const EtherCATInfo& info, const Device& d
     if (sii_sms) {
         for (std::size_t n = 0; n < sii_sms->items.size() && n < 32; ++n) {
             const sii::SyncManagerRecord& r = sii_sms->items[n];
-            out.sms.push_back({static_cast<std::uint8_t>(n), role_of_sii_type(r.type), r.start_address, r.length, r.control});
+            out.sms.push_back({static_cast<std::uint8_t>(n), ethercat::sync_manager_type_from_code(r.type).value_or(SmRole::unused),
+                               r.start_address, r.length, r.control});
         }
     } else {
         for (std::size_t n = 0; n < device.sms.size() && n < 32; ++n) {
             const SyncManager& s = device.sms[n];
-            out.sms.push_back({static_cast<std::uint8_t>(n), role_of_text(s.type), u16(s.start_address.value_or(0)),
-                               u16(s.default_size.value_or(0)), static_cast<std::uint8_t>(s.control_byte.value_or(0))});
+            out.sms.push_back({static_cast<std::uint8_t>(n), ethercat::parse_sync_manager_type(s.type).value_or(SmRole::unused),
+                               u16(s.start_address.value_or(0)), u16(s.default_size.value_or(0)),
+                               static_cast<std::uint8_t>(s.control_byte.value_or(0))});
         }
     }
     for (const SmExpectation& sm : out.sms) {

@@ -11,12 +11,13 @@
 #include <span>
 #include <vector>
 
+#include "esi/ethercat/sync_manager_type.hpp"
 #include "sim/coe_dictionary.hpp"
 
 namespace esi::sim {
 
-// The values are the SM communication types of 0x1C00 (ETG.1000.6 5.6.7.4.8).
-enum class SmRole : std::uint8_t { unused = 0, mailbox_out = 1, mailbox_in = 2, outputs = 3, inputs = 4 };
+// What an SM carries, numbered as 0x1C00 and the SII number it: the protocol layer's.
+using SmRole = ethercat::SyncManagerType;
 
 struct AccessRules {
     bool complete_access = false;  // CoE@CompleteAccess
